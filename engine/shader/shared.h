@@ -1,0 +1,23 @@
+// Host/device bridge: include from C++ and GLSL alike. In C++ the GLSL vector types map to glm and
+// every struct lives in ppr::gpu; in GLSL the macros vanish. Structs use scalar block layout
+// (GL_EXT_scalar_block_layout on the GLSL side), so sizes match C++ exactly; static_asserts check it.
+#ifndef PPR_SHARED_H
+#define PPR_SHARED_H
+
+#ifdef __cplusplus
+#include <glm/glm.hpp>
+#include <cstdint>
+#define PPR_BEGIN namespace ppr::gpu { using vec2 = glm::vec2; using vec3 = glm::vec3; using vec4 = glm::vec4; \
+    using mat4 = glm::mat4; using uint = uint32_t; using uvec2 = glm::uvec2; using uvec4 = glm::uvec4; \
+    using ivec2 = glm::ivec2;
+#define PPR_END }
+#define PPR_SIZE_CHECK(T, bytes) static_assert(sizeof(ppr::gpu::T) == (bytes), #T " size mismatch with GLSL")
+#define PPR_CONST(type, name, value) namespace ppr::gpu { using uint = uint32_t; inline constexpr type name = value; }
+#else
+#define PPR_BEGIN
+#define PPR_END
+#define PPR_SIZE_CHECK(T, bytes)
+#define PPR_CONST(type, name, value) const type name = value;
+#endif
+
+#endif
