@@ -1,0 +1,74 @@
+#pragma once
+// Turns a compiled RenderGraph into Vulkan commands: realizes transient resources from a pool keyed
+// by descriptor (no allocation once the pool is warm), records the planned barriers (one
+// vkCmdPipelineBarrier2 per pass), begins dynamic rendering for graphics passes, and wraps every pass
+// in a debug label and a pair of GPU timestamps.
+#include "graph/graph.hpp"
+#include "vk/context.hpp"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace ppr::graph {
+
+struct PassTiming {
+    std::string name;
+    double gpuMs = 0.0;
+};
+
+class GraphExecutor {
+public:
+    // framesInFlight: how many frames may be recorded before the oldest one's timings are read.
+    GraphExecutor(const vk::Context& ctx, uint32_t framesInFlight, uint32_t maxPassesPerFrame = 64);
+    ~GraphExecutor();
+    GraphExecutor(const GraphExecutor&) = delete;
+    GraphExecutor& operator=(const GraphExecutor&) = delete;
+
+    // Records the compiled graph into cmd for frame slot `frameSlot` (< framesInFlight). The caller
+    // submits cmd; imported resources' states are updated as if the commands had executed.
+    void execute(RenderGraph& graph, VkCommandBuffer cmd, uint32_t frameSlot);
+
+    // After the fence of the frame recorded in `frameSlot` has signalled: that frame's per-pass GPU
+    // times, in execution order. Empty if nothing was recorded in that slot yet.
+    std::vector<PassTiming> readTimings(uint32_t frameSlot);
+
+    // Destroys pooled resources that have not been used for `unusedFrames` executions
+    // (e.g. after a resize). Call only when the device is idle or the resources are no longer in use.
+    void trimPool(uint32_t unusedFrames);
+    size_t pooledImageCount() const { return images_.size(); }
+    size_t pooledBufferCount() const { return buffers_.size(); }
+    uint64_t poolAllocations() const { return allocations_; }  // total ever created, for "no per-frame allocation" tests
+
+private:
+    struct PooledImage {
+        ImageDesc desc;
+        VkImageUsageFlags usage = 0;
+        vk::Image image;
+        uint64_t lastUsedFrame = 0;
+        bool inUse = false;
+    };
+    struct PooledBuffer {
+        BufferDesc desc;
+        VkBufferUsageFlags usage = 0;
+        vk::Buffer buffer;
+        uint64_t lastUsedFrame = 0;
+        bool inUse = false;
+    };
+    struct TimingSlot {
+        std::vector<std::string> passNames;
+        uint32_t queryCount = 0;
+    };
+
+    const vk::Context& ctx_;
+    VkQueryPool queryPool_ = VK_NULL_HANDLE;
+    uint32_t framesInFlight_;
+    uint32_t maxPasses_;
+    std::vector<TimingSlot> timingSlots_;
+    std::vector<PooledImage> images_;
+    std::vector<PooledBuffer> buffers_;
+    uint64_t frameCounter_ = 0;
+    uint64_t allocations_ = 0;
+};
+
+}  // namespace ppr::graph
