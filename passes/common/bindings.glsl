@@ -1,0 +1,10 @@
+// GLSL prelude shared by the passes: extensions and the frame-constants block at set 0 binding 0.
+#extension GL_EXT_scalar_block_layout : require
+#include "common/frame.h"
+
+layout(set = 0, binding = 0, scalar) uniform FrameBlock { FrameConstants frame; };
+
+vec3 worldFromDepth(vec2 uv, float depth) {
+    vec4 p = frame.invViewProj * vec4(uv * 2.0 - 1.0, depth, 1.0);
+    return p.xyz / p.w;
+}

@@ -1,0 +1,37 @@
+// Per-frame constants shared by every pass (one uniform buffer per frame in flight).
+#ifndef PPR_FRAME_H
+#define PPR_FRAME_H
+#include "shader/shared.h"
+
+PPR_BEGIN
+struct FrameConstants {
+    mat4 view;
+    mat4 proj;
+    mat4 viewProj;
+    mat4 invViewProj;
+    mat4 lightViewProj;     // shadow map projection (reverse-Z orthographic)
+    vec4 cameraPos;         // xyz, w = near plane
+    vec4 lightDir;          // xyz: direction the light travels (unit), w = shadow map texel size (1/res)
+    vec4 lightColor;        // rgb radiance, w = exposure
+    vec4 skyColor;          // rgb ambient from above, w = ambient strength
+    vec4 groundColor;       // rgb ambient from below
+    vec2 screenSize;        // pixels
+    vec2 invScreenSize;
+    uint frameIndex;
+    uint debugView;         // DebugView value (composite)
+    uint pad0;
+    uint pad1;
+};
+PPR_END
+PPR_SIZE_CHECK(FrameConstants, 5 * 64 + 5 * 16 + 16 + 16);
+
+// Debug views selectable with --set debug=...
+PPR_CONST(uint, kDebugNone, 0u)
+PPR_CONST(uint, kDebugAlbedo, 1u)
+PPR_CONST(uint, kDebugNormals, 2u)
+PPR_CONST(uint, kDebugRoughness, 3u)
+PPR_CONST(uint, kDebugReflectors, 4u)
+PPR_CONST(uint, kDebugDepth, 5u)
+PPR_CONST(uint, kDebugShadow, 6u)
+
+#endif

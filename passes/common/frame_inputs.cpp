@@ -1,0 +1,19 @@
+#include "common/frame_inputs.hpp"
+
+#include <cstddef>
+
+namespace ppr::passes {
+
+std::vector<VkVertexInputAttributeDescription> sceneVertexAttributes(bool positionOnly) {
+    using scene::Vertex;
+    std::vector<VkVertexInputAttributeDescription> a = {
+        {0, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<uint32_t>(offsetof(Vertex, position))}};
+    if (!positionOnly) {
+        a.push_back({1, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<uint32_t>(offsetof(Vertex, normal))});
+        a.push_back({2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, static_cast<uint32_t>(offsetof(Vertex, tangent))});
+        a.push_back({3, 0, VK_FORMAT_R32G32_SFLOAT, static_cast<uint32_t>(offsetof(Vertex, uv0))});
+    }
+    return a;
+}
+
+}  // namespace ppr::passes

@@ -1,0 +1,48 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "common/bindings.glsl"
+#extension GL_EXT_nonuniform_qualifier : require
+#include "gpu/scene_data.h"
+
+layout(set = 0, binding = 1, scalar) readonly buffer Draws { DrawData draws[]; };
+layout(set = 0, binding = 2, scalar) readonly buffer Materials { MaterialData materials[]; };
+layout(set = 1, binding = 0) uniform sampler2D textures[];
+
+layout(location = 0) in vec3 vNormal;
+layout(location = 1) in vec4 vTangent;
+layout(location = 2) in vec2 vUv;
+layout(location = 3) flat in uint vDraw;
+
+layout(location = 0) out vec4 outNormal;
+layout(location = 1) out vec4 outAlbedo;
+layout(location = 2) out vec4 outMaterial;
+layout(location = 3) out uint outReflector;
+
+vec4 sampleOr(uint tex, vec4 fallback) {
+    return tex == kNoTexture ? fallback : texture(textures[nonuniformEXT(tex)], vUv);
+}
+
+void main() {
+    DrawData d = draws[vDraw];
+    MaterialData m = materials[d.material];
+    vec4 base = m.baseColor * sampleOr(m.baseColorTex, vec4(1.0));
+    vec4 mr = sampleOr(m.metalRoughTex, vec4(1.0));
+
+    // Two-sided: flip the geometric frame for back faces so thin panels light correctly.
+    vec3 n = normalize(gl_FrontFacing ? vNormal : -vNormal);
+    if (m.normalTex != kNoTexture) {
+        vec3 t = vTangent.xyz - n * dot(n, vTangent.xyz);
+        if (dot(t, t) > 1e-12) {
+            t = normalize(t);
+            vec3 b = cross(n, t) * (vTangent.w < 0.0 ? -1.0 : 1.0);
+            vec3 tn = texture(textures[nonuniformEXT(m.normalTex)], vUv).xyz * 2.0 - 1.0;
+            tn.xy *= m.normalScale;
+            n = normalize(t * tn.x + b * tn.y + n * max(tn.z, 1e-3));
+        }
+    }
+    outNormal = vec4(n, 1.0);
+    outAlbedo = vec4(base.rgb, 1.0);
+    outMaterial = vec4(clamp(m.roughness * mr.g, 0.02, 1.0), clamp(m.metallic * mr.b, 0.0, 1.0),
+                       (m.flags & kMaterialReflective) != 0u ? 1.0 : 0.0, 0.0);
+    outReflector = d.reflectorId;
+}

@@ -1,0 +1,15 @@
+// G-buffer layout (host/device shared).
+#ifndef PPR_GBUFFER_H
+#define PPR_GBUFFER_H
+#include "shader/shared.h"
+// Attachment locations:
+//   0 normal    RGBA16F   xyz = world-space shading normal (normal-mapped), w = 1 on geometry
+//   1 albedo    RGBA8 sRGB  rgb = base colour
+//   2 material  RGBA8     r = roughness, g = metallic, b = 1 if the material is reflective
+//   3 reflector R16_UINT  reflector index + 1 of the surface's reflector rectangle, 0 = none
+// Depth: D32, reverse-Z (1 = near, 0 = sky).
+PPR_CONST(uint, kGBufferNormal, 0u)
+PPR_CONST(uint, kGBufferAlbedo, 1u)
+PPR_CONST(uint, kGBufferMaterial, 2u)
+PPR_CONST(uint, kGBufferReflector, 3u)
+#endif

@@ -1,0 +1,27 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "common/bindings.glsl"
+#include "gpu/scene_data.h"
+
+layout(set = 0, binding = 1, scalar) readonly buffer Draws { DrawData draws[]; };
+layout(push_constant, scalar) uniform Push { DrawPush pc; };
+
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec4 inTangent;
+layout(location = 3) in vec2 inUv;
+
+layout(location = 0) out vec3 vNormal;
+layout(location = 1) out vec4 vTangent;
+layout(location = 2) out vec2 vUv;
+layout(location = 3) flat out uint vDraw;
+
+void main() {
+    DrawData d = draws[pc.drawIndex];
+    vec4 world = d.world * vec4(inPosition, 1.0);
+    vNormal = mat3(d.normalMatrix) * inNormal;
+    vTangent = vec4(mat3(d.world) * inTangent.xyz, inTangent.w);
+    vUv = inUv;
+    vDraw = pc.drawIndex;
+    gl_Position = frame.viewProj * world;
+}

@@ -1,0 +1,58 @@
+#include "gbuffer/gbuffer_pass.hpp"
+
+#include "gbuffer_frag.h"
+#include "gbuffer_vert.h"
+#include "gpu/scene_data.h"
+
+namespace ppr::passes {
+
+GBufferPass::GBufferPass(const vk::Context& ctx, const gpu::GpuScene& scene) : ctx_(ctx) {
+    shader::PipelineLayoutDesc layout;
+    layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
+    layout.stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+    layout.pushConstantBytes = sizeof(gpu::DrawPush);
+    layout.extraSets = {scene.textureSetLayout()};
+    pipeline_ = shader::GraphicsPipelineBuilder(ctx, "gbuffer")
+                    .vertex(PPR_SPIRV(gbuffer_vert))
+                    .fragment(PPR_SPIRV(gbuffer_frag))
+                    .layout(layout)
+                    .vertexInput(sizeof(scene::Vertex), sceneVertexAttributes(false))
+                    .colorFormats({kNormalFormat, kAlbedoFormat, kMaterialFormat, kReflectorFormat})
+                    .depth(kDepthFormat, true, true, VK_COMPARE_OP_GREATER)
+                    .build();
+}
+
+GBuffer GBufferPass::add(graph::RenderGraph& g, const FrameInputs& in) const {
+    const uint32_t w = in.extent.width, h = in.extent.height;
+    GBuffer out;
+    out.depth = g.createImage("gbuffer.depth", {w, h, kDepthFormat, 1});
+    out.normal = g.createImage("gbuffer.normal", {w, h, kNormalFormat, 1});
+    out.albedo = g.createImage("gbuffer.albedo", {w, h, kAlbedoFormat, 1});
+    out.material = g.createImage("gbuffer.material", {w, h, kMaterialFormat, 1});
+    out.reflector = g.createImage("gbuffer.reflector", {w, h, kReflectorFormat, 1});
+    const GBuffer& d = g.addPass<GBuffer>(
+        "gbuffer", graph::QueueKind::Graphics,
+        [&](graph::PassBuilder& b, GBuffer& data) {
+            data.normal = b.colorAttachment(out.normal, graph::LoadOp::Clear, {{0.0f, 0.0f, 0.0f, 0.0f}});
+            data.albedo = b.colorAttachment(out.albedo, graph::LoadOp::Clear, {{0.0f, 0.0f, 0.0f, 0.0f}});
+            data.material = b.colorAttachment(out.material, graph::LoadOp::Clear, {{1.0f, 0.0f, 0.0f, 0.0f}});
+            VkClearColorValue zero{};
+            data.reflector = b.colorAttachment(out.reflector, graph::LoadOp::Clear, zero);
+            data.depth = b.depthAttachment(out.depth, graph::LoadOp::Clear, 0.0f);
+        },
+        [this, in](const GBuffer&, graph::PassContext& pc) {
+            VkCommandBuffer cmd = pc.cmd();
+            pipeline_.bind(cmd);
+            shader::PushDescriptors(ctx_)
+                .uniformBuffer(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
+                .storageBuffer(in.scene->drawBuffer())
+                .storageBuffer(in.scene->materialBuffer())
+                .push(cmd, pipeline_);
+            VkDescriptorSet textures = in.scene->textureSet();
+            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.layout(), 1, 1, &textures, 0, nullptr);
+            in.scene->drawAll(cmd, [&](uint32_t i) { pipeline_.pushConstants(cmd, gpu::DrawPush{i, 0, 0, 0}); });
+        });
+    return d;
+}
+
+}  // namespace ppr::passes

@@ -1,0 +1,19 @@
+#pragma once
+// Deferred lighting: one directional light with PCF shadows + hemisphere ambient → HDR scene colour.
+#include "common/frame_inputs.hpp"
+#include "gbuffer/gbuffer_pass.hpp"
+
+namespace ppr::passes {
+
+class LightingPass {
+public:
+    static constexpr VkFormat kColorFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+    explicit LightingPass(const vk::Context& ctx);
+    graph::ImageHandle add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::ImageHandle shadowMap) const;
+
+private:
+    const vk::Context& ctx_;
+    shader::Pipeline pipeline_;
+};
+
+}  // namespace ppr::passes
