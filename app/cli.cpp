@@ -1,0 +1,106 @@
+#include "cli.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace ppr::app {
+namespace {
+
+uint32_t parseUnsigned(const std::string& option, const std::string& text, uint32_t lo, uint32_t hi) {
+    size_t used = 0;
+    unsigned long v = 0;
+    try {
+        if (text.empty() || text[0] == '-' || text[0] == '+') throw std::invalid_argument("sign");
+        v = std::stoul(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used != text.size() || used == 0) throw std::runtime_error(option + " " + text + ": expected a whole number");
+    if (v < lo || v > hi)
+        throw std::runtime_error(option + " " + text + ": out of range (" + std::to_string(lo) + ".." + std::to_string(hi) + ")");
+    return static_cast<uint32_t>(v);
+}
+
+}  // namespace
+
+const std::vector<std::string>& availableTechniques() {
+    // Reflection techniques join this list as they land (ppr, ssr-*, planar); "none" renders the
+    // lit scene without reflections.
+    static const std::vector<std::string> list = {"none"};
+    return list;
+}
+
+std::string usage() {
+    return "usage: ppr [view|capture|compare|bench] [options]\n"
+           "  view                 interactive window (default when a display is present)\n"
+           "  capture              render headless, write final.png + report.json (default without a display)\n"
+           "options:\n"
+           "  --scene FILE         .gltf or .glb (default: the built-in default scene)\n"
+           "  --reflectors FILE    reflector JSON (default: <scene>.reflectors.json or glTF node extras)\n"
+           "  --camera NAME|x,y,z,yawDeg,pitchDeg[,fovYDeg]\n"
+           "                       capture: default = every named camera; view: the first one\n"
+           "  --size WxH           default 1280x720 (16..8192 per side)\n"
+           "  --technique T        none (reflection techniques arrive with later features)\n"
+           "  --set key=value      repeatable; keys: debug, exposure, shadowres\n"
+           "  --frames N           frames to render (capture default 5: median GPU times over them)\n"
+           "  --out DIR            output directory (default out)\n"
+           "  --validation         Khronos validation + synchronization validation; any error exits 1\n"
+           "                       (also enabled by PPR_VALIDATION=1)\n"
+           "  --dump-graph         write graph.dot (Graphviz) of the frame graph next to the report\n";
+}
+
+Options parseCommandLine(int argc, const char* const* argv) {
+    Options o;
+    Settings check;  // validates --set values as they are parsed
+    int i = 1;
+    if (i < argc && argv[i][0] != '-') {
+        std::string m = argv[i++];
+        if (m == "view") o.mode = Mode::View;
+        else if (m == "capture") o.mode = Mode::Capture;
+        else if (m == "compare") o.mode = Mode::Compare;
+        else if (m == "bench") o.mode = Mode::Bench;
+        else throw std::runtime_error("unknown command '" + m + "' (expected view, capture, compare or bench)");
+    }
+    auto value = [&](const std::string& opt) -> std::string {
+        if (i + 1 >= argc) throw std::runtime_error(opt + ": missing value");
+        return argv[++i];
+    };
+    for (; i < argc; ++i) {
+        std::string a = argv[i];
+        if (a == "--help" || a == "-h") o.help = true;
+        else if (a == "--scene") o.scene = value(a);
+        else if (a == "--reflectors") o.reflectors = value(a);
+        else if (a == "--camera") o.camera = value(a);
+        else if (a == "--out") o.out = value(a);
+        else if (a == "--validation") o.validation = true;
+        else if (a == "--dump-graph") o.dumpGraph = true;
+        else if (a == "--frames") o.frames = parseUnsigned(a, value(a), 1, kMaxFrames);
+        else if (a == "--technique") {
+            o.technique = value(a);
+            const auto& t = availableTechniques();
+            if (std::find(t.begin(), t.end(), o.technique) == t.end()) {
+                std::string list;
+                for (const std::string& s : t) list += (list.empty() ? "" : ", ") + s;
+                throw std::runtime_error("--technique " + o.technique + ": not available in this build (available: " + list + ")");
+            }
+        } else if (a == "--size") {
+            std::string s = value(a);
+            size_t x = s.find('x');
+            if (x == std::string::npos) throw std::runtime_error("--size " + s + ": expected WxH, e.g. 1280x720");
+            o.width = parseUnsigned("--size", s.substr(0, x), kMinSize, kMaxSize);
+            o.height = parseUnsigned("--size", s.substr(x + 1), kMinSize, kMaxSize);
+        } else if (a == "--set") {
+            std::string kv = value(a);
+            check.apply(kv);
+            o.sets.push_back(kv);
+        } else {
+            throw std::runtime_error("unknown option '" + a + "' (see ppr --help)");
+        }
+    }
+    if (o.mode == Mode::Compare || o.mode == Mode::Bench)
+        throw std::runtime_error(std::string(o.mode == Mode::Compare ? "compare" : "bench") +
+                                 ": needs reflection techniques, which are not in this build yet (available commands: view, capture)");
+    return o;
+}
+
+}  // namespace ppr::app

@@ -1,0 +1,39 @@
+#pragma once
+// Command line per the DESIGN.md contract:
+//   ppr [view|capture|compare|bench] [--scene F] [--reflectors F] [--camera NAME|x,y,z,yaw,pitch[,fov]]
+//       [--size WxH] [--technique T] [--set key=value]... [--frames N] [--out DIR] [--validation]
+#include "settings.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ppr::app {
+
+enum class Mode { Auto, View, Capture, Compare, Bench };
+
+struct Options {
+    Mode mode = Mode::Auto;
+    std::string scene;       // empty = built-in default scene
+    std::string reflectors;  // empty = scene sidecar / glTF extras
+    std::string camera;      // empty = every named camera (capture) / the first (view)
+    uint32_t width = 1280, height = 720;
+    std::string technique = "none";
+    std::vector<std::string> sets;  // validated "key=value" assignments, in order
+    uint32_t frames = 0;            // 0 = mode default
+    std::string out = "out";
+    bool validation = false;
+    bool dumpGraph = false;  // --dump-graph: write graph.dot next to the report
+    bool help = false;
+};
+
+constexpr uint32_t kMinSize = 16;
+constexpr uint32_t kMaxSize = 8192;
+constexpr uint32_t kMaxFrames = 100000;
+
+// Throws std::runtime_error with one line naming the option and the problem.
+Options parseCommandLine(int argc, const char* const* argv);
+std::string usage();
+const std::vector<std::string>& availableTechniques();
+
+}  // namespace ppr::app

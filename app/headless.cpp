@@ -1,0 +1,116 @@
+#include "headless.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+namespace ppr::app {
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+HeadlessRenderer::HeadlessRenderer(const vk::Context& ctx, Renderer& renderer) : ctx_(ctx), renderer_(renderer) {
+    VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    pci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    pci.queueFamilyIndex = ctx.queueFamily();
+    VK_CHECK(vkCreateCommandPool(ctx.device(), &pci, nullptr, &pool_));
+    ctx.name(pool_, VK_OBJECT_TYPE_COMMAND_POOL, "headless frames");
+    VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    ai.commandPool = pool_;
+    ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    ai.commandBufferCount = Renderer::kFramesInFlight;
+    VK_CHECK(vkAllocateCommandBuffers(ctx.device(), &ai, cmds_));
+    for (uint32_t i = 0; i < Renderer::kFramesInFlight; ++i) {
+        VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+        VK_CHECK(vkCreateFence(ctx.device(), &fci, nullptr, &fences_[i]));
+        ctx.name(cmds_[i], VK_OBJECT_TYPE_COMMAND_BUFFER, "frame " + std::to_string(i));
+        ctx.name(fences_[i], VK_OBJECT_TYPE_FENCE, "frame fence " + std::to_string(i));
+    }
+}
+
+HeadlessRenderer::~HeadlessRenderer() {
+    vkDeviceWaitIdle(ctx_.device());
+    for (VkFence f : fences_) vkDestroyFence(ctx_.device(), f, nullptr);
+    vkDestroyCommandPool(ctx_.device(), pool_, nullptr);
+    vk::destroyBuffer(ctx_, readback_);
+}
+
+void HeadlessRenderer::ensureReadback(VkExtent2D extent) {
+    const VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 4;
+    if (readback_.buffer && readback_.size == bytes) return;
+    vkDeviceWaitIdle(ctx_.device());
+    vk::destroyBuffer(ctx_, readback_);
+    readback_ = vk::createBuffer(ctx_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "capture readback");
+    readbackImport_ = {};
+    readbackImport_.buffer = readback_.buffer;
+    readbackImport_.desc = {bytes};
+    readbackImport_.finalAccess = graph::Access::HostRead;
+}
+
+CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExtent2D extent, uint32_t frames, bool dumpGraph) {
+    ensureReadback(extent);
+    frames = std::max(frames, 1u);
+    CaptureResult result;
+    result.frames = frames;
+    std::map<std::string, std::vector<double>> perPass;
+    std::vector<double> totals;
+    auto collect = [&](uint32_t slot) {
+        if (!slotBusy_[slot]) return;
+        VK_CHECK(vkWaitForFences(ctx_.device(), 1, &fences_[slot], VK_TRUE, UINT64_MAX));
+        slotBusy_[slot] = false;
+        double total = 0.0;
+        std::vector<std::string> order;
+        for (const graph::PassTiming& t : renderer_.timings(slot)) {
+            perPass[t.name].push_back(t.gpuMs);
+            total += t.gpuMs;
+            order.push_back(t.name);
+        }
+        totals.push_back(total);
+        if (order.size() >= result.passOrder.size()) result.passOrder = order;
+    };
+
+    for (uint32_t f = 0; f < frames; ++f) {
+        const uint32_t slot = f % Renderer::kFramesInFlight;
+        collect(slot);
+        VK_CHECK(vkResetFences(ctx_.device(), 1, &fences_[slot]));
+        VkCommandBuffer cmd = cmds_[slot];
+        VK_CHECK(vkResetCommandBuffer(cmd, 0));
+        VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+        bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+        VK_CHECK(vkBeginCommandBuffer(cmd, &bi));
+        FrameRequest req;
+        req.camera = camera;
+        req.extent = extent;
+        const bool last = f + 1 == frames;
+        req.readback = last ? &readbackImport_ : nullptr;
+        req.dumpGraph = last && dumpGraph;
+        FrameRecord rec = renderer_.record(cmd, slot, req);
+        if (last) {
+            result.cullLog = rec.cullLog;
+            result.dot = rec.dot;
+        }
+        VK_CHECK(vkEndCommandBuffer(cmd));
+        VkCommandBufferSubmitInfo cbi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
+        cbi.commandBuffer = cmd;
+        VkSubmitInfo2 si{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+        si.commandBufferInfoCount = 1;
+        si.pCommandBufferInfos = &cbi;
+        VK_CHECK(vkQueueSubmit2(ctx_.queue(), 1, &si, fences_[slot]));
+        slotBusy_[slot] = true;
+    }
+    for (uint32_t s = 0; s < Renderer::kFramesInFlight; ++s) collect(s);
+
+    vmaInvalidateAllocation(ctx_.allocator(), readback_.allocation, 0, VK_WHOLE_SIZE);
+    result.image.width = extent.width;
+    result.image.height = extent.height;
+    result.image.pixels.resize(readback_.size);
+    std::memcpy(result.image.pixels.data(), readback_.mapped, readback_.size);
+    for (auto& [name, values] : perPass) result.passMedianMs[name] = median(values);
+    result.totalMedianMs = median(totals);
+    return result;
+}
+
+}  // namespace ppr::app

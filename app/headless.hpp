@@ -1,0 +1,45 @@
+#pragma once
+// Headless rendering: records frames through the Renderer, submits them two in flight, reads the
+// final image back and collects per-pass GPU timestamps. Used by `ppr capture` and the GPU tests.
+#include "renderer.hpp"
+#include "util/image_io.hpp"
+
+#include <map>
+
+namespace ppr::app {
+
+struct CaptureResult {
+    util::Rgba8Image image;
+    std::map<std::string, double> passMedianMs;  // per pass, median over the frames
+    double totalMedianMs = 0.0;                  // median over frames of the per-frame sum
+    uint32_t frames = 0;
+    std::vector<std::string> passOrder;          // execution order
+    std::string cullLog;
+    std::string dot;
+};
+
+class HeadlessRenderer {
+public:
+    HeadlessRenderer(const vk::Context& ctx, Renderer& renderer);
+    ~HeadlessRenderer();
+    HeadlessRenderer(const HeadlessRenderer&) = delete;
+    HeadlessRenderer& operator=(const HeadlessRenderer&) = delete;
+
+    // Renders `frames` frames (≥ 1) of the camera at the extent; the last one is read back.
+    CaptureResult capture(const scene::CameraPose& camera, VkExtent2D extent, uint32_t frames, bool dumpGraph = false);
+
+private:
+    void ensureReadback(VkExtent2D extent);
+    const vk::Context& ctx_;
+    Renderer& renderer_;
+    VkCommandPool pool_ = VK_NULL_HANDLE;
+    VkCommandBuffer cmds_[Renderer::kFramesInFlight]{};
+    VkFence fences_[Renderer::kFramesInFlight]{};
+    bool slotBusy_[Renderer::kFramesInFlight]{};
+    vk::Buffer readback_;
+    graph::ExternalBuffer readbackImport_;
+};
+
+double median(std::vector<double> values);
+
+}  // namespace ppr::app

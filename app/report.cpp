@@ -1,0 +1,46 @@
+#include "report.hpp"
+
+#include <fstream>
+#include <stdexcept>
+
+namespace ppr::app {
+
+nlohmann::json makeReport(const vk::Context& ctx, const ReportInfo& info, const CaptureResult& r) {
+    nlohmann::json j;
+    j["device"] = ctx.info().name;
+    j["device_type"] = ctx.info().type;
+    j["driver"] = ctx.info().driver;
+    j["api_version"] = ctx.info().apiVersionString;
+    j["scene"] = info.scene;
+    j["camera"] = {{"name", info.camera},
+                   {"position", {info.pose.position.x, info.pose.position.y, info.pose.position.z}},
+                   {"yaw_deg", info.pose.yawDeg},
+                   {"pitch_deg", info.pose.pitchDeg},
+                   {"fov_y_deg", info.pose.fovYDeg}};
+    j["size"] = {info.size.width, info.size.height};
+    j["technique"] = info.technique;
+    j["settings"] = nlohmann::json::object();
+    if (info.settings)
+        for (const auto& [k, v] : info.settings->all()) j["settings"][k] = v;
+    j["frames"] = r.frames;
+    nlohmann::json passes = nlohmann::json::object();
+    for (const std::string& name : r.passOrder) passes[name] = {{"gpu_ms", r.passMedianMs.at(name)}};
+    for (const auto& [name, ms] : r.passMedianMs)
+        if (!passes.contains(name)) passes[name] = {{"gpu_ms", ms}};
+    j["passes"] = passes;
+    j["pass_order"] = r.passOrder;
+    j["total_gpu_ms"] = r.totalMedianMs;
+    j["validation"] = info.validationEnabled;
+    j["validation_errors"] = info.validationErrors;
+    j["images"] = info.images;
+    return j;
+}
+
+void writeJsonFile(const std::string& path, const nlohmann::json& j) {
+    std::ofstream f(path);
+    if (!f) throw std::runtime_error(path + ": cannot open for writing");
+    f << j.dump(2) << "\n";
+    if (!f) throw std::runtime_error(path + ": write failed");
+}
+
+}  // namespace ppr::app

@@ -1,0 +1,25 @@
+#pragma once
+// report.json of `ppr capture` (fields per the DESIGN.md contract).
+#include "headless.hpp"
+#include "vk/context.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace ppr::app {
+
+struct ReportInfo {
+    std::string scene;
+    std::string camera;
+    scene::CameraPose pose;
+    VkExtent2D size{};
+    std::string technique;
+    const Settings* settings = nullptr;
+    uint32_t validationErrors = 0;
+    bool validationEnabled = false;
+    std::map<std::string, std::string> images;  // role → file
+};
+
+nlohmann::json makeReport(const vk::Context& ctx, const ReportInfo& info, const CaptureResult& result);
+void writeJsonFile(const std::string& path, const nlohmann::json& j);
+
+}  // namespace ppr::app

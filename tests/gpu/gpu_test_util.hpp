@@ -1,0 +1,76 @@
+#pragma once
+// Helpers shared by the GPU tests: a validated context + default scene, image statistics, running
+// the ppr executable.
+#include "headless.hpp"
+#include "scene_source.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+namespace ppr::test {
+
+struct GpuFixture {
+    std::unique_ptr<vk::Context> ctx;
+    scene::Scene scene;
+    std::unique_ptr<app::Renderer> renderer;
+    std::unique_ptr<app::HeadlessRenderer> headless;
+
+    explicit GpuFixture(const std::string& scenePath = PPR_DEFAULT_SCENE_FILE) {
+        scene = scene::loadGltf(scenePath);
+        vk::ContextOptions o;
+        o.validation = true;  // Khronos validation + synchronization validation
+        ctx = vk::Context::create(o);
+        renderer = std::make_unique<app::Renderer>(*ctx, scene);
+        headless = std::make_unique<app::HeadlessRenderer>(*ctx, *renderer);
+    }
+    scene::CameraPose camera(const std::string& name) const {
+        const scene::NamedCamera* c = scene.findCamera(name);
+        if (!c) throw std::runtime_error("test: no camera " + name);
+        return c->pose;
+    }
+};
+
+// Standard deviation of luma over the image (0..255).
+inline double lumaStdDev(const util::Rgba8Image& img) {
+    double sum = 0, sum2 = 0;
+    const size_t n = size_t(img.width) * img.height;
+    for (size_t i = 0; i < n; ++i) {
+        const uint8_t* p = &img.pixels[i * 4];
+        double y = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+        sum += y;
+        sum2 += y * y;
+    }
+    double mean = sum / n;
+    return std::sqrt(std::max(0.0, sum2 / n - mean * mean));
+}
+
+struct RunResult {
+    int exitCode = -1;
+    std::string output;  // stdout + stderr
+};
+
+inline RunResult runPpr(const std::string& args) {
+    std::string cmd = std::string(PPR_EXE) + " " + args + " 2>&1";
+    RunResult r;
+    FILE* pipe = popen(cmd.c_str(), "r");
+    if (!pipe) return r;
+    char buf[4096];
+    while (size_t n = fread(buf, 1, sizeof(buf), pipe)) r.output.append(buf, n);
+    int status = pclose(pipe);
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+inline std::filesystem::path tempDir(const std::string& name) {
+    auto dir = std::filesystem::temp_directory_path() / ("ppr-test-" + name + "-" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+}  // namespace ppr::test
