@@ -1,0 +1,61 @@
+#pragma once
+// Minimal glTF 2.0 writer: one external .bin buffer, one bufferView per accessor, external PNG
+// images, flat node list (all nodes are scene roots). JSON uses insertion-ordered objects and
+// numbers rounded to 1e-6 so the output is byte-stable and diff-friendly.
+#include "mesh_builder.hpp"
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gen {
+
+using Json = nlohmann::ordered_json;
+
+// Rounds to 6 decimals (and folds −0 into 0) so JSON numbers print short and identically.
+double num(double v);
+Json vec(const glm::dvec3& v);
+
+struct MaterialDesc {
+    std::string name;
+    glm::vec4 baseColor{1.0f};
+    float metallic = 0.0f;
+    float roughness = 1.0f;
+    int baseColorTexture = -1, metallicRoughnessTexture = -1, normalTexture = -1;  // texture indices
+    bool reflective = false;  // material extras {"ppr_reflective": true}
+};
+
+struct NodeDesc {
+    std::string name;
+    glm::dvec3 translation{0.0};
+    std::optional<glm::dquat> rotation;  // omitted when identity
+    int mesh = -1, camera = -1;
+    Json extras;  // null = none
+};
+
+class GltfWriter {
+public:
+    int addTexture(const std::string& uri);  // image + texture sharing one repeat/trilinear sampler
+    int addMaterial(const MaterialDesc& m);
+    int addMesh(const MeshData& mesh, int material);
+    int addCamera(const std::string& name, double yfovRadians);
+    int addNode(const NodeDesc& node);
+    void setSceneExtras(Json extras) { sceneExtras_ = std::move(extras); }
+    const MeshData& mesh(int index) const { return meshes_[static_cast<size_t>(index)]; }
+
+    // Writes <dir>/<stem>.gltf and <dir>/<stem>.bin.
+    void write(const std::string& dir, const std::string& stem) const;
+
+private:
+    std::vector<std::string> images_;
+    std::vector<Json> materials_, cameras_, nodes_;
+    std::vector<MeshData> meshes_;
+    std::vector<int> meshMaterials_;
+    Json sceneExtras_;
+};
+
+}  // namespace gen

@@ -1,0 +1,195 @@
+#include "textures.hpp"
+
+#include "noise.hpp"
+
+#include <stb_image_write.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace gen {
+
+namespace {
+
+struct Rgb {
+    float r, g, b;
+};
+
+Rgb mix(const Rgb& a, const Rgb& b, float t) {
+    return {a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t};
+}
+Rgb scale(const Rgb& a, float s) { return {a.r * s, a.g * s, a.b * s}; }
+
+uint8_t toByte(float v) { return static_cast<uint8_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
+
+void put(Image& img, int x, int y, const Rgb& c) {
+    uint8_t* p = &img.rgb[(static_cast<size_t>(y) * img.width + x) * 3];
+    p[0] = toByte(c.r);
+    p[1] = toByte(c.g);
+    p[2] = toByte(c.b);
+}
+
+Image blank(int size) {
+    Image img;
+    img.width = img.height = size;
+    img.rgb.assign(static_cast<size_t>(size) * size * 3, 0);
+    return img;
+}
+
+float smoothstep(float e0, float e1, float x) {
+    const float t = std::clamp((x - e0) / (e1 - e0), 0.0f, 1.0f);
+    return t * t * (3.0f - 2.0f * t);
+}
+
+// Metallic-roughness texel for a dielectric: R unused, G roughness, B metallic = 0.
+Rgb roughnessTexel(float roughness) { return {1.0f, roughness, 0.0f}; }
+
+// Running-bond masonry cell lookup: which block (cx, cy) a texel falls in and its distance to the
+// nearest joint, with every odd row shifted by half a block.
+struct Cell {
+    int cx, cy;
+    float edge;  // texels to the nearest joint centre line
+};
+Cell masonryCell(int x, int y, int blockW, int blockH, int size, bool stagger) {
+    const int cy = y / blockH;
+    const int shift = (stagger && (cy & 1)) ? blockW / 2 : 0;
+    const int xs = (x + shift) % size;
+    const int cx = xs / blockW;
+    const float lx = static_cast<float>(xs % blockW) + 0.5f, ly = static_cast<float>(y % blockH) + 0.5f;
+    const float edge = std::min(std::min(lx, static_cast<float>(blockW) - lx), std::min(ly, static_cast<float>(blockH) - ly));
+    // Wrap the column index so the shifted last block matches the first (tileable).
+    return {cx % (size / blockW), cy, edge};
+}
+
+}  // namespace
+
+Image normalMapFromHeight(const std::vector<float>& h, int w, int hgt, float strength) {
+    Image img = blank(w);
+    img.height = hgt;
+    img.rgb.assign(static_cast<size_t>(w) * hgt * 3, 0);
+    auto at = [&](int x, int y) { return h[static_cast<size_t>((y + hgt) % hgt) * w + (x + w) % w]; };
+    for (int y = 0; y < hgt; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const float dx = 0.5f * (at(x + 1, y) - at(x - 1, y));
+            const float dyDown = 0.5f * (at(x, y + 1) - at(x, y - 1));
+            // Image "up" is −row, so the up-slope is −dyDown; the normal leans against the slope.
+            float nx = -dx * strength, ny = dyDown * strength, nz = 1.0f;
+            const float len = std::sqrt(nx * nx + ny * ny + nz * nz);
+            nx /= len;
+            ny /= len;
+            nz /= len;
+            put(img, x, y, {nx * 0.5f + 0.5f, ny * 0.5f + 0.5f, nz * 0.5f + 0.5f});
+        }
+    }
+    return img;
+}
+
+TextureSet floorTiles(int size) {
+    const int tile = size / 4;
+    const Rgb stoneA{0.60f, 0.58f, 0.54f}, stoneB{0.72f, 0.68f, 0.61f}, stoneC{0.52f, 0.53f, 0.55f};
+    const Rgb grout{0.30f, 0.29f, 0.27f};
+    TextureSet set{blank(size), {}, blank(size)};
+    std::vector<float> height(static_cast<size_t>(size) * size);
+    for (int y = 0; y < size; ++y) {
+        for (int x = 0; x < size; ++x) {
+            const float u = (x + 0.5f) / size, v = (y + 0.5f) / size;
+            const Cell c = masonryCell(x, y, tile, tile, size, false);
+            const uint32_t id = static_cast<uint32_t>(c.cy * 16 + c.cx);
+            const float slab = smoothstep(2.0f, 5.5f, c.edge);
+            const float coarse = fbm(u, v, 4, 3, 11u + id);  // per-slab cloudiness
+            const float fine = fbm(u, v, 16, 4, 23u);
+            const float pick = hash01(id, 0, 7u);
+            Rgb stone = pick < 0.45f ? mix(stoneA, stoneB, hash01(id, 1, 7u)) : pick < 0.8f ? stoneB : stoneC;
+            stone = scale(stone, 0.82f + 0.22f * coarse + 0.12f * (fine - 0.5f));
+            // Dark pits where the fine noise dips, for texture at close range.
+            const float pit = smoothstep(0.30f, 0.24f, fine);
+            stone = scale(stone, 1.0f - 0.12f * pit);
+            put(set.baseColor, x, y, mix(grout, stone, slab));
+            height[static_cast<size_t>(y) * size + x] =
+                slab * (0.85f + 0.1f * hash01(id, 2, 7u)) + 0.25f * (fine - 0.5f) * slab - 0.3f * pit;
+            put(set.metallicRoughness, x, y, roughnessTexel(0.95f - slab * (0.22f - 0.12f * coarse)));
+        }
+    }
+    set.normal = normalMapFromHeight(height, size, size, 2.0f);
+    return set;
+}
+
+TextureSet bricks(int size) {
+    const int bw = size / 4, bh = size / 8;
+    const Rgb palette[4] = {{0.58f, 0.26f, 0.18f}, {0.66f, 0.33f, 0.22f}, {0.50f, 0.22f, 0.16f}, {0.70f, 0.42f, 0.30f}};
+    const Rgb mortar{0.66f, 0.63f, 0.58f};
+    TextureSet set{blank(size), {}, blank(size)};
+    std::vector<float> height(static_cast<size_t>(size) * size);
+    for (int y = 0; y < size; ++y) {
+        for (int x = 0; x < size; ++x) {
+            const float u = (x + 0.5f) / size, v = (y + 0.5f) / size;
+            const Cell c = masonryCell(x, y, bw, bh, size, true);
+            const uint32_t id = static_cast<uint32_t>(c.cy * 16 + c.cx);
+            const float brick = smoothstep(3.0f, 6.0f, c.edge);
+            const float fine = fbm(u, v, 16, 4, 41u);
+            const float blotch = fbm(u, v, 8, 3, 43u + id);
+            Rgb col = palette[hash3(id, 3, 5u) % 4];
+            col = scale(col, 0.85f + 0.25f * blotch + 0.15f * (fine - 0.5f));
+            // A few soot-darkened bricks break up the repetition.
+            if (hash01(id, 4, 5u) < 0.12f) col = scale(col, 0.7f);
+            put(set.baseColor, x, y, mix(scale(mortar, 0.9f + 0.2f * fine), col, brick));
+            height[static_cast<size_t>(y) * size + x] = 0.15f + brick * (0.85f + 0.3f * (blotch - 0.5f)) + 0.2f * (fine - 0.5f);
+            put(set.metallicRoughness, x, y, roughnessTexel(brick > 0.5f ? 0.8f + 0.1f * fine : 0.95f));
+        }
+    }
+    set.normal = normalMapFromHeight(height, size, size, 2.5f);
+    return set;
+}
+
+TextureSet sandstone(int size) {
+    const int bw = size / 2, bh = size / 4;
+    const Rgb base{0.80f, 0.70f, 0.54f}, joint{0.55f, 0.49f, 0.40f};
+    TextureSet set{blank(size), {}, blank(size)};
+    std::vector<float> height(static_cast<size_t>(size) * size);
+    for (int y = 0; y < size; ++y) {
+        for (int x = 0; x < size; ++x) {
+            const float u = (x + 0.5f) / size, v = (y + 0.5f) / size;
+            const Cell c = masonryCell(x, y, bw, bh, size, true);
+            const uint32_t id = static_cast<uint32_t>(c.cy * 16 + c.cx);
+            const float block = smoothstep(1.0f, 3.5f, c.edge);
+            const float fine = fbm(u, v, 16, 3, 61u);
+            const float coarse = fbm(u, v, 4, 3, 67u + id);
+            // Sedimentary strata: horizontal bands bent by noise (integer frequency keeps it tileable).
+            const float strata = 0.5f + 0.5f * std::sin(6.2831853f * (16.0f * v) + 2.0f * coarse);
+            Rgb col = scale(base, 0.86f + 0.14f * hash01(id, 1, 9u) + 0.1f * (coarse - 0.5f) - 0.03f * strata);
+            put(set.baseColor, x, y, mix(joint, col, block));
+            height[static_cast<size_t>(y) * size + x] = block * (0.9f + 0.2f * (coarse - 0.5f)) + 0.15f * (fine - 0.5f);
+            put(set.metallicRoughness, x, y, roughnessTexel(0.85f + 0.1f * fine));
+        }
+    }
+    set.normal = normalMapFromHeight(height, size, size, 1.5f);
+    return set;
+}
+
+Image marble(int size) {
+    Image img = blank(size);
+    const Rgb dark{0.13f, 0.13f, 0.14f}, vein{0.78f, 0.77f, 0.74f};
+    for (int y = 0; y < size; ++y) {
+        for (int x = 0; x < size; ++x) {
+            const float u = (x + 0.5f) / size, v = (y + 0.5f) / size;
+            const float turb = fbm(u, v, 4, 4, 81u);
+            // Integer frequencies in u and v keep the veins continuous across the tile border.
+            const float s = std::sin(6.2831853f * (2.0f * u + 1.0f * v) + 7.0f * turb);
+            const float veinMask = std::pow(1.0f - std::fabs(s), 10.0f);
+            const float cloud = fbm(u, v, 8, 3, 83u);
+            put(img, x, y, mix(scale(dark, 0.85f + 0.3f * cloud), vein, 0.8f * veinMask));
+        }
+    }
+    return img;
+}
+
+void writePng(const std::string& path, const Image& image) {
+    // Fixed settings: the library default could change between stb versions.
+    stbi_write_png_compression_level = 9;
+    stbi_write_force_png_filter = -1;
+    if (!stbi_write_png(path.c_str(), image.width, image.height, 3, image.rgb.data(), image.width * 3))
+        throw std::runtime_error(path + ": cannot write PNG");
+}
+
+}  // namespace gen
