@@ -36,13 +36,21 @@ HeadlessRenderer::~HeadlessRenderer() {
     for (VkFence f : fences_) vkDestroyFence(ctx_.device(), f, nullptr);
     vkDestroyCommandPool(ctx_.device(), pool_, nullptr);
     vk::destroyBuffer(ctx_, readback_);
+    vk::destroyImage(ctx_, target_);
 }
 
-void HeadlessRenderer::ensureReadback(VkExtent2D extent) {
+void HeadlessRenderer::ensureTargets(VkExtent2D extent) {
     const VkDeviceSize bytes = VkDeviceSize(extent.width) * extent.height * 4;
-    if (readback_.buffer && readback_.size == bytes) return;
+    if (readback_.buffer && target_.extent.width == extent.width && target_.extent.height == extent.height) return;
     vkDeviceWaitIdle(ctx_.device());
     vk::destroyBuffer(ctx_, readback_);
+    vk::destroyImage(ctx_, target_);
+    target_ = vk::createImage(ctx_, extent, Renderer::kCaptureFormat,
+                              VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, 1, "capture target");
+    targetImport_ = {};
+    targetImport_.image = target_.image;
+    targetImport_.view = target_.view;
+    targetImport_.desc = {extent.width, extent.height, Renderer::kCaptureFormat, 1};
     readback_ = vk::createBuffer(ctx_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "capture readback");
     readbackImport_ = {};
     readbackImport_.buffer = readback_.buffer;
@@ -51,7 +59,7 @@ void HeadlessRenderer::ensureReadback(VkExtent2D extent) {
 }
 
 CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExtent2D extent, uint32_t frames, bool dumpGraph) {
-    ensureReadback(extent);
+    ensureTargets(extent);
     frames = std::max(frames, 1u);
     CaptureResult result;
     result.frames = frames;
@@ -68,7 +76,10 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
             total += t.gpuMs;
             order.push_back(t.name);
         }
-        totals.push_back(total);
+        if (!order.empty()) {
+            totals.push_back(total);
+            result.timedFrames++;
+        }
         if (order.size() >= result.passOrder.size()) result.passOrder = order;
     };
 
@@ -84,6 +95,7 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
         FrameRequest req;
         req.camera = camera;
         req.extent = extent;
+        req.target = &targetImport_;
         const bool last = f + 1 == frames;
         req.readback = last ? &readbackImport_ : nullptr;
         req.dumpGraph = last && dumpGraph;

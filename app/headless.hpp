@@ -13,6 +13,7 @@ struct CaptureResult {
     std::map<std::string, double> passMedianMs;  // per pass, median over the frames
     double totalMedianMs = 0.0;                  // median over frames of the per-frame sum
     uint32_t frames = 0;
+    uint32_t timedFrames = 0;                    // frames whose timestamps came back (== frames)
     std::vector<std::string> passOrder;          // execution order
     std::string cullLog;
     std::string dot;
@@ -29,13 +30,17 @@ public:
     CaptureResult capture(const scene::CameraPose& camera, VkExtent2D extent, uint32_t frames, bool dumpGraph = false);
 
 private:
-    void ensureReadback(VkExtent2D extent);
+    void ensureTargets(VkExtent2D extent);
     const vk::Context& ctx_;
     Renderer& renderer_;
     VkCommandPool pool_ = VK_NULL_HANDLE;
     VkCommandBuffer cmds_[Renderer::kFramesInFlight]{};
     VkFence fences_[Renderer::kFramesInFlight]{};
     bool slotBusy_[Renderer::kFramesInFlight]{};
+    // A persistent offscreen target imported into every frame's graph, like a swapchain image: the
+    // frame's output is observable, so the graph keeps all passes even on frames not read back.
+    vk::Image target_;
+    graph::ExternalImage targetImport_;
     vk::Buffer readback_;
     graph::ExternalBuffer readbackImport_;
 };

@@ -17,6 +17,7 @@ TEST(Capture, RendersNonBlankImagesWithoutValidationErrors) {
             EXPECT_GE(r.passMedianMs.at(pass), 0.0);
         }
         EXPECT_GT(r.totalMedianMs, 0.0);
+        EXPECT_EQ(r.timedFrames, 2u) << "a frame was culled away or not timed";
     }
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
