@@ -50,6 +50,7 @@ public:
     std::vector<graph::PassTiming> timings(uint32_t slot) { return executor_->readTimings(slot); }
 
     const graph::GraphExecutor& executor() const { return *executor_; }
+    graph::GraphExecutor& executor() { return *executor_; }  // the viewer trims the transient pool after resizes
 
 private:
     void writeFrameConstants(uint32_t slot, const FrameRequest& request);

@@ -1,9 +1,516 @@
+// `ppr view`: GLFW window + swapchain, fly camera, ImGui panel, frames recorded through the Renderer
+// (the ImGui pass is the graph's overlay), captures on F12.
+//
+// Automation hooks (tests/ui):
+//   PPR_VIEWER_FRAMES=N         exit by itself after N presented frames (exit code 0 unless validation errors)
+//   PPR_VIEWER_SCREENSHOT_AT=N  save a capture (like F12) after frame N
+//   SIGINT / SIGTERM            close the window cleanly (exit code 0 unless validation errors)
 #include "viewer.hpp"
 
+#include "headless.hpp"
+#include "report.hpp"
+#include "scene_source.hpp"
+#include "viewer_ui.hpp"
+#include "vk/swapchain.hpp"
+
+#define GLFW_INCLUDE_VULKAN
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
 #include <cstdlib>
+#include <deque>
+#include <filesystem>
+#include <memory>
 #include <stdexcept>
+#include <string>
 
 namespace ppr::app {
-bool displayAvailable() { return std::getenv("DISPLAY") || std::getenv("WAYLAND_DISPLAY"); }
-int runViewer(const Options&) { throw std::runtime_error("view: the viewer is being written"); }
+
+bool displayAvailable() {
+    if (!std::getenv("DISPLAY") && !std::getenv("WAYLAND_DISPLAY")) return false;
+    if (!glfwInit()) return false;
+    glfwTerminate();
+    return true;
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Positive integer from the environment; 0 when unset. A malformed value is an error naming the variable.
+uint64_t envCount(const char* name) {
+    const char* text = std::getenv(name);
+    if (!text || !*text) return 0;
+    char* end = nullptr;
+    const unsigned long long v = std::strtoull(text, &end, 10);
+    if (*end != '\0' || v == 0 || text[0] == '-')
+        throw std::runtime_error(std::string(name) + "=" + text + ": expected a positive integer (frames)");
+    return v;
+}
+
+volatile std::sig_atomic_t g_quit = 0;
+void onQuitSignal(int) { g_quit = 1; }
+
+// Ctrl+C / kill: leave the frame loop so the device is drained and validation is tallied.
+struct QuitSignals {
+    using Handler = void (*)(int);
+    Handler oldInt, oldTerm;
+    QuitSignals() : oldInt(std::signal(SIGINT, onQuitSignal)), oldTerm(std::signal(SIGTERM, onQuitSignal)) { g_quit = 0; }
+    ~QuitSignals() {
+        std::signal(SIGINT, oldInt == SIG_ERR ? SIG_DFL : oldInt);
+        std::signal(SIGTERM, oldTerm == SIG_ERR ? SIG_DFL : oldTerm);
+    }
+};
+
+void glfwError(int code, const char* text) { std::fprintf(stderr, "ppr: GLFW error %d: %s\n", code, text); }
+
+struct GlfwSession {
+    GlfwSession() {
+        glfwSetErrorCallback(glfwError);
+        if (!glfwInit()) throw std::runtime_error("view: cannot initialise GLFW (no usable display? use `ppr capture` headless)");
+    }
+    ~GlfwSession() { glfwTerminate(); }
+};
+
+// Input gathered by GLFW callbacks (installed before ImGui's, which chain to them).
+struct InputEvents {
+    float wheel = 0.0f;
+    int cycleDebug = 0;
+    bool capture = false;
+    bool resized = false;
+};
+
+void onKey(GLFWwindow* w, int key, int, int action, int) {
+    auto* in = static_cast<InputEvents*>(glfwGetWindowUserPointer(w));
+    if (!in || action != GLFW_PRESS) return;
+    if (key == GLFW_KEY_F2) ++in->cycleDebug;
+    if (key == GLFW_KEY_F12) in->capture = true;
+}
+void onScroll(GLFWwindow* w, double, double dy) {
+    if (auto* in = static_cast<InputEvents*>(glfwGetWindowUserPointer(w))) in->wheel += static_cast<float>(dy);
+}
+void onFramebufferSize(GLFWwindow* w, int, int) {
+    if (auto* in = static_cast<InputEvents*>(glfwGetWindowUserPointer(w))) in->resized = true;
+}
+
+// Everything of a viewer session except the Vulkan context (owned by runViewer so that validation
+// messages raised while tearing these down are still counted). Members are destroyed in reverse order.
+class Viewer {
+public:
+    Viewer(const Options& o, vk::Context& ctx, const scene::Scene& scene);
+    ~Viewer();
+    // maxFrames: exit after that many frames (0 = run until closed); captureAt: capture after that frame.
+    void run(uint64_t maxFrames, uint64_t captureAt);
+
+private:
+    struct Window {
+        GLFWwindow* handle = nullptr;
+        ~Window() {
+            if (handle) glfwDestroyWindow(handle);
+        }
+    };
+    struct Surface {
+        VkInstance instance = VK_NULL_HANDLE;
+        VkSurfaceKHR handle = VK_NULL_HANDLE;
+        ~Surface() {
+            if (handle) vkDestroySurfaceKHR(instance, handle, nullptr);
+        }
+    };
+    struct FrameSync {
+        VkDevice device = VK_NULL_HANDLE;
+        VkCommandPool pool = VK_NULL_HANDLE;
+        VkCommandBuffer cmd[Renderer::kFramesInFlight]{};
+        VkFence fence[Renderer::kFramesInFlight]{};
+        VkSemaphore acquired[Renderer::kFramesInFlight]{};
+        bool busy[Renderer::kFramesInFlight]{};  // submitted and its timings not read yet
+        ~FrameSync() {
+            if (!device) return;
+            for (VkFence f : fence) vkDestroyFence(device, f, nullptr);
+            for (VkSemaphore s : acquired) vkDestroySemaphore(device, s, nullptr);
+            vkDestroyCommandPool(device, pool, nullptr);
+        }
+    };
+
+    bool recreateSwapchain();  // false while minimised
+    bool renderFrame(uint32_t slot);  // false when the frame was skipped (out of date)
+    void updateCamera(float dt);
+    void buildUi();
+    void saveCapture();
+
+    const Options& options_;
+    vk::Context& ctx_;
+    const scene::Scene& scene_;
+    std::vector<ResolvedCamera> cameras_;  // every named camera, for the combo
+    InputEvents input_;
+    Window window_;
+    Surface surface_;
+    std::unique_ptr<vk::Swapchain> swapchain_;
+    std::unique_ptr<Renderer> renderer_;
+    std::unique_ptr<passes::UiPass> uiPass_;
+    std::unique_ptr<ImGuiLayer> imgui_;
+    FrameSync sync_;
+    std::unique_ptr<HeadlessRenderer> headless_;  // captures, created on the first one
+
+    scene::FlyCamera camera_;
+    std::string cameraName_;
+    int cameraIndex_ = -1;
+    bool vsync_ = true;
+    bool swapchainDirty_ = false;
+    bool looking_ = false;
+    double lastCursorX_ = 0.0, lastCursorY_ = 0.0;
+    TimingHistory timings_;
+    std::deque<double> frameMs_, cpuMs_;
+    std::string status_;
+    bool captureRequested_ = false;
+    uint64_t frames_ = 0;
+};
+
+Viewer::Viewer(const Options& o, vk::Context& ctx, const scene::Scene& scene) : options_(o), ctx_(ctx), scene_(scene) {
+    cameras_ = resolveCameras(scene, "");
+    const ResolvedCamera start = resolveCameras(scene, o.camera).front();
+    camera_.pose = start.pose;
+    cameraName_ = start.name;
+    for (size_t i = 0; i < cameras_.size(); ++i)
+        if (!o.camera.empty() && cameras_[i].name == start.name) cameraIndex_ = static_cast<int>(i);
+    if (o.camera.empty()) cameraIndex_ = 0;
+
+    if (!glfwVulkanSupported()) throw std::runtime_error("view: GLFW found no Vulkan loader");
+    glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
+    const std::string title = "ppr \xE2\x80\x94 " + ctx.info().name;  // "ppr — <device>"
+    window_.handle = glfwCreateWindow(static_cast<int>(o.width), static_cast<int>(o.height), title.c_str(), nullptr, nullptr);
+    if (!window_.handle) throw std::runtime_error("view: cannot create a " + std::to_string(o.width) + "x" + std::to_string(o.height) + " window");
+    glfwSetWindowUserPointer(window_.handle, &input_);
+    glfwSetKeyCallback(window_.handle, onKey);
+    glfwSetScrollCallback(window_.handle, onScroll);
+    glfwSetFramebufferSizeCallback(window_.handle, onFramebufferSize);
+
+    surface_.instance = ctx.instance();
+    VK_CHECK(glfwCreateWindowSurface(ctx.instance(), window_.handle, nullptr, &surface_.handle));
+    VkBool32 presentable = VK_FALSE;
+    VK_CHECK(vkGetPhysicalDeviceSurfaceSupportKHR(ctx.physicalDevice(), ctx.queueFamily(), surface_.handle, &presentable));
+    if (!presentable) throw std::runtime_error("view: " + ctx.info().name + " cannot present to this window (on Xvfb or a remote display try PPR_DEVICE=cpu)");
+
+    swapchain_ = std::make_unique<vk::Swapchain>(ctx, surface_.handle);
+    int fbw = 0, fbh = 0;
+    glfwGetFramebufferSize(window_.handle, &fbw, &fbh);
+    while (!swapchain_->recreate({static_cast<uint32_t>(fbw), static_cast<uint32_t>(fbh)}, vsync_)) {
+        glfwWaitEventsTimeout(0.25);  // created minimised: wait for a size
+        glfwGetFramebufferSize(window_.handle, &fbw, &fbh);
+        if (glfwWindowShouldClose(window_.handle) || g_quit) throw std::runtime_error("view: window closed before it was shown");
+    }
+
+    renderer_ = std::make_unique<Renderer>(ctx, scene);
+    for (const std::string& kv : o.sets) renderer_->settings().apply(kv);
+    renderer_->prepareTargetFormat(swapchain_->format());
+    uiPass_ = std::make_unique<passes::UiPass>(ctx);
+    imgui_ = std::make_unique<ImGuiLayer>(ctx, window_.handle, *uiPass_, swapchain_->format(), swapchain_->imageCount());
+
+    sync_.device = ctx.device();
+    VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    pci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    pci.queueFamilyIndex = ctx.queueFamily();
+    VK_CHECK(vkCreateCommandPool(ctx.device(), &pci, nullptr, &sync_.pool));
+    ctx.name(sync_.pool, VK_OBJECT_TYPE_COMMAND_POOL, "viewer frames");
+    VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    ai.commandPool = sync_.pool;
+    ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    ai.commandBufferCount = Renderer::kFramesInFlight;
+    VK_CHECK(vkAllocateCommandBuffers(ctx.device(), &ai, sync_.cmd));
+    for (uint32_t i = 0; i < Renderer::kFramesInFlight; ++i) {
+        VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+        fci.flags = VK_FENCE_CREATE_SIGNALED_BIT;
+        VK_CHECK(vkCreateFence(ctx.device(), &fci, nullptr, &sync_.fence[i]));
+        VkSemaphoreCreateInfo sci{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+        VK_CHECK(vkCreateSemaphore(ctx.device(), &sci, nullptr, &sync_.acquired[i]));
+        const std::string n = std::to_string(i);
+        ctx.name(sync_.cmd[i], VK_OBJECT_TYPE_COMMAND_BUFFER, "viewer frame " + n);
+        ctx.name(sync_.fence[i], VK_OBJECT_TYPE_FENCE, "viewer frame fence " + n);
+        ctx.name(sync_.acquired[i], VK_OBJECT_TYPE_SEMAPHORE, "image acquired " + n);
+    }
+}
+
+Viewer::~Viewer() { vkDeviceWaitIdle(ctx_.device()); }
+
+bool Viewer::recreateSwapchain() {
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window_.handle, &w, &h);
+    if (w == 0 || h == 0) return false;
+    const VkFormat oldFormat = swapchain_->format();
+    if (!swapchain_->recreate({static_cast<uint32_t>(w), static_cast<uint32_t>(h)}, vsync_)) return false;  // waits idle
+    uiPass_->releaseFramebuffers();  // their views are gone
+    if (swapchain_->format() != oldFormat) renderer_->prepareTargetFormat(swapchain_->format());
+    imgui_->swapchainChanged(swapchain_->format(), swapchain_->imageCount());
+    // Transients of the old size are no longer used by any frame (the device is idle).
+    renderer_->executor().trimPool(0);
+    swapchainDirty_ = false;
+    return true;
+}
+
+void Viewer::updateCamera(float dt) {
+    GLFWwindow* w = window_.handle;
+    scene::FlyCameraInput in;
+    in.dt = std::clamp(dt, 0.0f, 0.1f);
+    auto key = [&](int k) { return glfwGetKey(w, k) == GLFW_PRESS ? 1.0f : 0.0f; };
+    if (!imgui_->wantsKeyboard()) {
+        in.forward = key(GLFW_KEY_W) - key(GLFW_KEY_S);
+        in.right = key(GLFW_KEY_D) - key(GLFW_KEY_A);
+        in.up = key(GLFW_KEY_E) - key(GLFW_KEY_Q);
+    }
+    double x = 0.0, y = 0.0;
+    glfwGetCursorPos(w, &x, &y);
+    const bool rmb = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+    if (rmb && !looking_ && !imgui_->wantsMouse()) looking_ = true;  // a drag that starts over the panel is the panel's
+    else if (!rmb) looking_ = false;
+    if (looking_) {
+        in.mouseDx = static_cast<float>(x - lastCursorX_);
+        in.mouseDy = static_cast<float>(y - lastCursorY_);
+    }
+    lastCursorX_ = x;
+    lastCursorY_ = y;
+    if (input_.wheel != 0.0f && !imgui_->wantsMouse()) camera_.scrollSpeed(input_.wheel);
+    input_.wheel = 0.0f;
+
+    const scene::CameraPose before = camera_.pose;
+    camera_.update(in);
+    if (camera_.pose.position != before.position || camera_.pose.yawDeg != before.yawDeg || camera_.pose.pitchDeg != before.pitchDeg) {
+        cameraIndex_ = -1;
+        cameraName_ = "free";
+    }
+}
+
+void Viewer::buildUi() {
+    imgui_->beginFrame();
+    auto average = [](const std::deque<double>& d) {
+        double s = 0.0;
+        for (double v : d) s += v;
+        return d.empty() ? 0.0 : s / static_cast<double>(d.size());
+    };
+    PanelModel m;
+    m.device = &ctx_.info();
+    m.extent = swapchain_->extent();
+    m.frameMs = average(frameMs_);
+    m.cpuMs = average(cpuMs_);
+    m.cameras = &cameras_;
+    m.cameraIndex = cameraIndex_;
+    m.cameraSpeed = camera_.speed;
+    m.vsync = vsync_;
+    m.settings = &renderer_->settings();
+    m.timings = &timings_;
+    m.status = status_;
+    const PanelActions a = drawPanel(m);
+    status_ = m.status;
+    imgui_->endFrame();
+
+    if (a.jumpToCamera >= 0 && a.jumpToCamera < static_cast<int>(cameras_.size())) {
+        cameraIndex_ = a.jumpToCamera;
+        camera_.pose = cameras_[static_cast<size_t>(cameraIndex_)].pose;
+        cameraName_ = cameras_[static_cast<size_t>(cameraIndex_)].name;
+    }
+    if (a.vsyncChanged) {
+        vsync_ = m.vsync;
+        swapchainDirty_ = true;
+    }
+    if (a.capture) captureRequested_ = true;
+}
+
+bool Viewer::renderFrame(uint32_t slot) {
+    VkDevice dev = ctx_.device();
+    uint32_t imageIndex = 0;
+    const VkResult acq = vkAcquireNextImageKHR(dev, swapchain_->handle(), UINT64_MAX, sync_.acquired[slot], VK_NULL_HANDLE, &imageIndex);
+    if (acq == VK_ERROR_OUT_OF_DATE_KHR) {  // the semaphore was not signalled: nothing to undo
+        swapchainDirty_ = true;
+        return false;
+    }
+    if (acq == VK_SUBOPTIMAL_KHR) swapchainDirty_ = true;  // the semaphore is signalled: render and present this one
+    else VK_CHECK(acq);
+
+    VK_CHECK(vkResetFences(dev, 1, &sync_.fence[slot]));
+    VkCommandBuffer cmd = sync_.cmd[slot];
+    VK_CHECK(vkResetCommandBuffer(cmd, 0));
+    VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    VK_CHECK(vkBeginCommandBuffer(cmd, &bi));
+
+    const VkExtent2D extent = swapchain_->extent();
+    graph::ExternalImage target;
+    target.image = swapchain_->image(imageIndex);
+    target.view = swapchain_->view(imageIndex);
+    target.desc = {extent.width, extent.height, swapchain_->format(), 1};
+    // Contents are not kept (tonemap overwrites the whole image); the acquire semaphore is waited at
+    // COLOR_ATTACHMENT_OUTPUT, so the first barrier chains to it from that stage.
+    target.state = {VK_IMAGE_LAYOUT_UNDEFINED, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_NONE};
+    target.finalAccess = graph::Access::Present;
+
+    FrameRequest req;
+    req.camera = camera_.pose;
+    req.extent = extent;
+    req.target = &target;
+    req.overlay = [this](graph::RenderGraph& g, graph::ImageHandle image) { return imgui_->addPass(g, image); };
+    const FrameRecord rec = renderer_->record(cmd, slot, req);
+    if (!rec.cullLog.empty() && frames_ == 0) std::fprintf(stderr, "%s", rec.cullLog.c_str());
+    VK_CHECK(vkEndCommandBuffer(cmd));
+
+    VkSemaphoreSubmitInfo wait{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
+    wait.semaphore = sync_.acquired[slot];
+    wait.stageMask = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
+    VkSemaphoreSubmitInfo signal{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
+    signal.semaphore = swapchain_->renderFinished(imageIndex);
+    signal.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+    VkCommandBufferSubmitInfo cbi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
+    cbi.commandBuffer = cmd;
+    VkSubmitInfo2 si{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+    si.waitSemaphoreInfoCount = 1;
+    si.pWaitSemaphoreInfos = &wait;
+    si.commandBufferInfoCount = 1;
+    si.pCommandBufferInfos = &cbi;
+    si.signalSemaphoreInfoCount = 1;
+    si.pSignalSemaphoreInfos = &signal;
+    VK_CHECK(vkQueueSubmit2(ctx_.queue(), 1, &si, sync_.fence[slot]));
+    sync_.busy[slot] = true;
+
+    VkSemaphore renderFinished = swapchain_->renderFinished(imageIndex);
+    VkSwapchainKHR sc = swapchain_->handle();
+    VkPresentInfoKHR pi{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
+    pi.waitSemaphoreCount = 1;
+    pi.pWaitSemaphores = &renderFinished;
+    pi.swapchainCount = 1;
+    pi.pSwapchains = &sc;
+    pi.pImageIndices = &imageIndex;
+    const VkResult pr = vkQueuePresentKHR(ctx_.queue(), &pi);
+    if (pr == VK_ERROR_OUT_OF_DATE_KHR || pr == VK_SUBOPTIMAL_KHR) swapchainDirty_ = true;
+    else VK_CHECK(pr);
+    return true;
+}
+
+void Viewer::saveCapture() {
+    namespace fs = std::filesystem;
+    try {
+        vkDeviceWaitIdle(ctx_.device());
+        // The capture re-uses the renderer's frame slots; the viewer's own timings there are stale now.
+        for (bool& b : sync_.busy) b = false;
+        if (!headless_) headless_ = std::make_unique<HeadlessRenderer>(ctx_, *renderer_);
+        const VkExtent2D extent = swapchain_->extent();
+        const uint32_t errorsBefore = ctx_.validationErrors();
+        CaptureResult r = headless_->capture(camera_.pose, extent, 3);
+        fs::path dir;
+        for (uint32_t n = 1;; ++n) {
+            dir = fs::path(options_.out) / ("view-capture-" + std::to_string(n));
+            if (!fs::exists(dir)) break;
+        }
+        fs::create_directories(dir);
+        util::writePng((dir / "final.png").string(), r.image);
+        ReportInfo info;
+        info.scene = scene_.sourcePath;
+        info.camera = cameraName_;
+        info.pose = camera_.pose;
+        info.size = extent;
+        info.technique = options_.technique;
+        info.settings = &renderer_->settings();
+        info.validationEnabled = ctx_.validationEnabled();
+        info.validationErrors = ctx_.validationErrors() - errorsBefore;
+        info.images = {{"final", "final.png"}};
+        writeJsonFile((dir / "report.json").string(), makeReport(ctx_, info, r));
+        status_ = "saved " + (dir / "final.png").string();
+        std::printf("ppr: %s\n", status_.c_str());
+    } catch (const std::exception& e) {
+        status_ = std::string("capture failed: ") + e.what();
+        std::fprintf(stderr, "ppr: %s\n", status_.c_str());
+    }
+}
+
+void Viewer::run(uint64_t maxFrames, uint64_t captureAt) {
+    GLFWwindow* w = window_.handle;
+    Clock::time_point last = Clock::now();
+    while (!glfwWindowShouldClose(w) && !g_quit) {
+        if (maxFrames && frames_ >= maxFrames) break;
+        glfwPollEvents();
+
+        int fbw = 0, fbh = 0;
+        glfwGetFramebufferSize(w, &fbw, &fbh);
+        if (fbw == 0 || fbh == 0) {  // minimised: nothing to render into
+            glfwWaitEventsTimeout(0.25);  // (a timeout so that a quit signal is still noticed)
+            last = Clock::now();
+            continue;
+        }
+        if (input_.resized || swapchainDirty_) {
+            input_.resized = false;
+            if (!recreateSwapchain()) continue;
+        }
+
+        const Clock::time_point now = Clock::now();
+        const double dtMs = std::chrono::duration<double, std::milli>(now - last).count();
+        last = now;
+
+        const uint32_t slot = static_cast<uint32_t>(frames_ % Renderer::kFramesInFlight);
+        VK_CHECK(vkWaitForFences(ctx_.device(), 1, &sync_.fence[slot], VK_TRUE, UINT64_MAX));
+        if (sync_.busy[slot]) {
+            timings_.add(renderer_->timings(slot));
+            sync_.busy[slot] = false;
+        }
+        // Every frame at or before frames_ - kFramesInFlight has completed: unused transients can go.
+        if (frames_ % 120 == 119) renderer_->executor().trimPool(Renderer::kFramesInFlight + 1);
+
+        const Clock::time_point cpuStart = Clock::now();
+        for (; input_.cycleDebug > 0; --input_.cycleDebug)
+            if (!imgui_->wantsTextInput()) cycleDebugView(renderer_->settings());
+        if (input_.capture) {
+            input_.capture = false;
+            if (!imgui_->wantsTextInput()) captureRequested_ = true;
+        }
+        updateCamera(static_cast<float>(dtMs * 1e-3));
+        buildUi();
+        if (swapchainDirty_) continue;  // vsync toggled: recreate before rendering
+        const bool presented = renderFrame(slot);
+        const double cpuMs = std::chrono::duration<double, std::milli>(Clock::now() - cpuStart).count();
+        if (!presented) continue;
+
+        ++frames_;
+        auto push = [](std::deque<double>& d, double v) {
+            d.push_back(v);
+            while (d.size() > TimingHistory::kFrames) d.pop_front();
+        };
+        if (frames_ > 1) push(frameMs_, dtMs);
+        push(cpuMs_, cpuMs);
+        if (captureAt && frames_ == captureAt) captureRequested_ = true;
+        if (captureRequested_) {
+            captureRequested_ = false;
+            saveCapture();
+        }
+    }
+    vkDeviceWaitIdle(ctx_.device());
+}
+
+}  // namespace
+
+int runViewer(const Options& o) {
+    const uint64_t maxFrames = envCount("PPR_VIEWER_FRAMES");
+    const uint64_t captureAt = envCount("PPR_VIEWER_SCREENSHOT_AT");
+    const scene::Scene scene = loadScene(o);
+    resolveCameras(scene, o.camera);  // a bad --camera fails before a window opens
+    GlfwSession glfw;
+    uint32_t extensionCount = 0;
+    const char** extensions = glfwGetRequiredInstanceExtensions(&extensionCount);
+    if (!extensions) throw std::runtime_error("view: GLFW cannot create Vulkan surfaces on this display");
+    vk::ContextOptions co;
+    co.validation = o.validation;
+    co.instanceExtensions.assign(extensions, extensions + extensionCount);
+    co.swapchain = true;
+    std::unique_ptr<vk::Context> ctx = vk::Context::create(co);
+    std::printf("ppr: %s (%s, Vulkan %s)%s\n", ctx->info().name.c_str(), ctx->info().type.c_str(), ctx->info().apiVersionString.c_str(),
+                ctx->validationEnabled() ? ", validation + synchronization validation on" : "");
+    {
+        QuitSignals signals;
+        Viewer viewer(o, *ctx, scene);
+        viewer.run(maxFrames, captureAt);
+    }
+    if (ctx->validationErrors() > 0) {
+        std::fprintf(stderr, "ppr: %u validation error(s)\n", ctx->validationErrors());
+        return 1;
+    }
+    return 0;
+}
+
 }  // namespace ppr::app

@@ -47,6 +47,7 @@ TEST(Cli, SingleCameraWritesIntoOutAndDumpsTheGraph) {
 }
 
 struct BadInput {
+    const char* name;
     const char* args;
     const char* mustMention;
 };
@@ -63,13 +64,19 @@ TEST_P(CliBadInput, ExitsNonZeroWithOneLineNamingTheProblem) {
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, CliBadInput,
-    ::testing::Values(BadInput{"--set colour=red", "known keys: debug"}, BadInput{"--set debug=sparkles", "expected one of"},
-                      BadInput{"--set exposure=nan", "exposure"}, BadInput{"--size 99999x5", "--size"},
-                      BadInput{"--size 12", "expected WxH"}, BadInput{"--frames 0", "--frames"},
-                      BadInput{"--camera nowhere", "known:"}, BadInput{"--camera 1,2,3,nan,0", "--camera"},
-                      BadInput{"--scene /nonexistent/scene.gltf", "/nonexistent/scene.gltf"},
-                      BadInput{"--technique raytracing", "available"}, BadInput{"--bogus", "unknown option"},
-                      BadInput{"--reflectors " PPR_TEST_DATA_DIR "/reflectors/bad_nan.json", "bad_nan.json"}));
+    ::testing::Values(BadInput{"unknown_set_key", "--set colour=red", "known keys: debug"}, BadInput{"bad_choice", "--set debug=sparkles", "expected one of"},
+                      BadInput{"nan_number", "--set exposure=nan", "exposure"}, BadInput{"size_too_large", "--size 99999x5", "--size"},
+                      BadInput{"size_not_wxh", "--size 12", "expected WxH"}, BadInput{"zero_frames", "--frames 0", "--frames"},
+                      BadInput{"unknown_camera", "--camera nowhere", "known:"}, BadInput{"nan_camera", "--camera 1,2,3,nan,0", "--camera"},
+                      BadInput{"missing_scene", "--scene /nonexistent/scene.gltf", "/nonexistent/scene.gltf"},
+                      BadInput{"unknown_technique", "--technique raytracing", "available"}, BadInput{"unknown_option", "--bogus", "unknown option"},
+                      BadInput{"nan_reflector", "--reflectors " PPR_TEST_DATA_DIR "/reflectors/bad_nan.json", "bad_nan.json"},
+                      BadInput{"missing_reflectors", "--reflectors /nonexistent/r.json", "/nonexistent/r.json"},
+                      BadInput{"gltf_index_out_of_range", "--scene /usr/share/assimp/models/glTF2/IndexOutOfRange/IndexOutOfRange.gltf", "IndexOutOfRange.gltf"},
+                      BadInput{"gltf_missing_bin", "--scene /usr/share/assimp/models/glTF2/MissingBin/BoxTextured.gltf", "BoxTextured.gltf"},
+                      BadInput{"gltf_infinite_positions", "--scene /usr/share/assimp/models/glTF2/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb",
+                               "BoxWithInfinites.glb"}),
+    [](const ::testing::TestParamInfo<BadInput>& info) { return std::string(info.param.name); });
 
 }  // namespace
 }  // namespace ppr::test

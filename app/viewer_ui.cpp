@@ -1,0 +1,307 @@
+#include "viewer_ui.hpp"
+
+#include "headless.hpp"  // median()
+
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_vulkan.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace ppr::app {
+
+// ---------------------------------------------------------------------------------------------------
+// Timing history
+
+void TimingHistory::add(const std::vector<graph::PassTiming>& frame) {
+    if (frame.empty()) return;
+    auto push = [](std::deque<float>& d, float v) {
+        d.push_back(v);
+        while (d.size() > kFrames) d.pop_front();
+    };
+    order_.clear();
+    double total = 0.0;
+    for (const graph::PassTiming& t : frame) {
+        order_.push_back(t.name);
+        push(passes_[t.name], static_cast<float>(t.gpuMs));
+        total += t.gpuMs;
+    }
+    push(totals_, static_cast<float>(total));
+}
+
+std::vector<TimingHistory::Row> TimingHistory::rows() const {
+    std::vector<Row> rows;
+    for (const std::string& name : order_) {
+        const std::deque<float>& d = passes_.at(name);
+        Row r;
+        r.name = name;
+        r.history.assign(d.begin(), d.end());
+        r.medianMs = median(std::vector<double>(d.begin(), d.end()));
+        rows.push_back(std::move(r));
+    }
+    return rows;
+}
+
+double TimingHistory::totalMedianMs() const { return median(std::vector<double>(totals_.begin(), totals_.end())); }
+
+// ---------------------------------------------------------------------------------------------------
+// ImGui layer
+
+namespace {
+void checkImGuiVk(VkResult r) {
+    if (r < 0) std::fprintf(stderr, "ppr: ImGui Vulkan backend: %s\n", vk::resultName(r));
+}
+}  // namespace
+
+ImGuiLayer::ImGuiLayer(const vk::Context& ctx, GLFWwindow* window, passes::UiPass& ui, VkFormat format, uint32_t imageCount)
+    : ctx_(ctx), ui_(ui) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    try {
+        ImGuiIO& io = ImGui::GetIO();
+        io.IniFilename = nullptr;  // no imgui.ini in the working directory
+        ImGui::StyleColorsDark();
+        ImGui::GetStyle().WindowRounding = 4.0f;
+        // install_callbacks = true chains to the viewer's GLFW callbacks installed before this.
+        if (!ImGui_ImplGlfw_InitForVulkan(window, true)) throw std::runtime_error("view: ImGui GLFW backend failed to initialise");
+        glfwBackend_ = true;
+
+        VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 16};
+        VkDescriptorPoolCreateInfo pci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+        pci.flags = VK_DESCRIPTOR_POOL_CREATE_FREE_DESCRIPTOR_SET_BIT;
+        pci.maxSets = 16;
+        pci.poolSizeCount = 1;
+        pci.pPoolSizes = &size;
+        VK_CHECK(vkCreateDescriptorPool(ctx.device(), &pci, nullptr, &pool_));
+        ctx.name(pool_, VK_OBJECT_TYPE_DESCRIPTOR_POOL, "imgui descriptors");
+        initVulkan(format, imageCount);
+    } catch (...) {
+        shutdownVulkan();
+        if (glfwBackend_) ImGui_ImplGlfw_Shutdown();
+        ImGui::DestroyContext();
+        if (pool_) vkDestroyDescriptorPool(ctx.device(), pool_, nullptr);
+        throw;
+    }
+}
+
+ImGuiLayer::~ImGuiLayer() {
+    vkDeviceWaitIdle(ctx_.device());
+    shutdownVulkan();
+    if (glfwBackend_) ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    vkDestroyDescriptorPool(ctx_.device(), pool_, nullptr);
+}
+
+void ImGuiLayer::initVulkan(VkFormat format, uint32_t imageCount) {
+    ImGui_ImplVulkan_InitInfo ii{};
+    ii.Instance = ctx_.instance();
+    ii.PhysicalDevice = ctx_.physicalDevice();
+    ii.Device = ctx_.device();
+    ii.QueueFamily = ctx_.queueFamily();
+    ii.Queue = ctx_.queue();
+    ii.DescriptorPool = pool_;
+    ii.Subpass = 0;
+    ii.MinImageCount = std::max(imageCount, 2u);
+    // The backend cycles ImageCount vertex/index buffers without fences: it must exceed the frames
+    // that can be in flight.
+    ii.ImageCount = std::max({imageCount, ii.MinImageCount, Renderer::kFramesInFlight + 1});
+    ii.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
+    ii.CheckVkResultFn = checkImGuiVk;
+    if (!ImGui_ImplVulkan_Init(&ii, ui_.renderPass(format))) throw std::runtime_error("view: ImGui Vulkan backend failed to initialise");
+    vulkanBackend_ = true;
+    format_ = format;
+    ctx_.immediateSubmit([](VkCommandBuffer cmd) {
+        if (!ImGui_ImplVulkan_CreateFontsTexture(cmd)) throw std::runtime_error("view: ImGui font upload failed");
+    });
+    ImGui_ImplVulkan_DestroyFontUploadObjects();
+}
+
+void ImGuiLayer::shutdownVulkan() {
+    if (!vulkanBackend_) return;
+    ImGui_ImplVulkan_Shutdown();
+    vulkanBackend_ = false;
+}
+
+void ImGuiLayer::swapchainChanged(VkFormat format, uint32_t imageCount) {
+    if (format != format_) {
+        // The backend's pipeline is tied to a render pass of the old format.
+        shutdownVulkan();
+        VK_CHECK(vkResetDescriptorPool(ctx_.device(), pool_, 0));
+        initVulkan(format, imageCount);
+    } else {
+        ImGui_ImplVulkan_SetMinImageCount(std::max(imageCount, 2u));
+    }
+}
+
+void ImGuiLayer::beginFrame() {
+    ImGui_ImplVulkan_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+}
+
+void ImGuiLayer::endFrame() { ImGui::Render(); }
+
+graph::ImageHandle ImGuiLayer::addPass(graph::RenderGraph& g, graph::ImageHandle target) {
+    return ui_.add(g, target, [](VkCommandBuffer cmd) {
+        if (ImDrawData* data = ImGui::GetDrawData()) ImGui_ImplVulkan_RenderDrawData(data, cmd);
+    });
+}
+
+bool ImGuiLayer::wantsMouse() const { return ImGui::GetIO().WantCaptureMouse; }
+bool ImGuiLayer::wantsKeyboard() const { return ImGui::GetIO().WantCaptureKeyboard; }
+bool ImGuiLayer::wantsTextInput() const { return ImGui::GetIO().WantTextInput; }
+
+// ---------------------------------------------------------------------------------------------------
+// Panel
+
+std::string cycleDebugView(Settings& settings) {
+    for (const SettingSpec& s : settingSpecs()) {
+        if (s.key != "debug" || s.choices.empty()) continue;
+        auto it = std::find(s.choices.begin(), s.choices.end(), settings.get("debug"));
+        size_t next = it == s.choices.end() ? 0 : (static_cast<size_t>(it - s.choices.begin()) + 1) % s.choices.size();
+        settings.set("debug", s.choices[next]);
+        return s.choices[next];
+    }
+    return {};
+}
+
+namespace {
+
+bool isIntegral(double v) { return std::isfinite(v) && std::floor(v) == v; }
+
+void helpTooltip(const std::string& help) {
+    if (!help.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", help.c_str());
+}
+
+// One widget per registered setting; every change goes through Settings::set (shared validation).
+void settingWidget(const SettingSpec& spec, PanelModel& m) {
+    Settings& settings = *m.settings;
+    auto apply = [&](const std::string& value) {
+        try {
+            settings.set(spec.key, value);
+        } catch (const std::exception& e) {
+            m.status = e.what();
+        }
+    };
+    const std::string& current = settings.get(spec.key);
+    if (!spec.choices.empty()) {
+        if (ImGui::BeginCombo(spec.key.c_str(), current.c_str())) {
+            for (const std::string& c : spec.choices) {
+                const bool selected = c == current;
+                if (ImGui::Selectable(c.c_str(), selected) && !selected) apply(c);
+                if (selected) ImGui::SetItemDefaultFocus();
+            }
+            ImGui::EndCombo();
+        }
+        helpTooltip(spec.help);
+        return;
+    }
+    double value = 0.0;
+    try {
+        value = settings.number(spec.key);
+    } catch (const std::exception&) {
+        value = spec.min;
+    }
+    ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp;
+    if (spec.min > 0.0 && spec.max / spec.min >= 100.0) flags |= ImGuiSliderFlags_Logarithmic;
+    double defaultValue = 0.0;
+    try {
+        defaultValue = std::stod(spec.defaultValue);
+    } catch (const std::exception&) {
+    }
+    const bool integral = isIntegral(spec.min) && isIntegral(spec.max) && isIntegral(defaultValue) &&
+                          spec.defaultValue.find_first_of(".eE") == std::string::npos && spec.max <= 2e9 && spec.min >= -2e9;
+    if (integral) {
+        int v = static_cast<int>(std::lround(value));
+        if (ImGui::SliderInt(spec.key.c_str(), &v, static_cast<int>(spec.min), static_cast<int>(spec.max), "%d", flags))
+            apply(std::to_string(std::clamp(v, static_cast<int>(spec.min), static_cast<int>(spec.max))));
+    } else {
+        float v = static_cast<float>(value);
+        if (ImGui::SliderFloat(spec.key.c_str(), &v, static_cast<float>(spec.min), static_cast<float>(spec.max), "%.3g", flags)) {
+            char text[32];
+            std::snprintf(text, sizeof text, "%.6g", std::clamp(static_cast<double>(v), spec.min, spec.max));
+            apply(text);
+        }
+    }
+    helpTooltip(spec.help + " (ctrl+click to type a value)");
+}
+
+}  // namespace
+
+PanelActions drawPanel(PanelModel& m) {
+    PanelActions a;
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(330, std::clamp(io.DisplaySize.y - 16.0f, 120.0f, 580.0f)), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowBgAlpha(0.85f);
+    if (!ImGui::Begin("ppr")) {
+        ImGui::End();
+        return a;
+    }
+    ImGui::PushItemWidth(170.0f);
+    if (m.device) {
+        ImGui::TextUnformatted(m.device->name.c_str());
+        ImGui::Text("%s, Vulkan %s", m.device->type.c_str(), m.device->apiVersionString.c_str());
+    }
+    ImGui::Text("%u x %u", m.extent.width, m.extent.height);
+    ImGui::Text("frame %.2f ms (%.1f FPS)", m.frameMs, m.frameMs > 0.0 ? 1000.0 / m.frameMs : 0.0);
+    ImGui::Text("CPU %.2f ms (UI, record, submit, present)", m.cpuMs);
+    ImGui::TextDisabled("F2: cycle debug view  F12: capture");
+    ImGui::TextDisabled("WASD move, Q/E down/up");
+    ImGui::TextDisabled("right mouse: look, wheel: speed");
+
+    if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) {
+        if (m.cameras && !m.cameras->empty()) {
+            const char* preview = m.cameraIndex >= 0 ? (*m.cameras)[static_cast<size_t>(m.cameraIndex)].name.c_str() : "(free)";
+            if (ImGui::BeginCombo("camera", preview)) {
+                for (size_t i = 0; i < m.cameras->size(); ++i) {
+                    const bool selected = static_cast<int>(i) == m.cameraIndex;
+                    if (ImGui::Selectable((*m.cameras)[i].name.c_str(), selected)) a.jumpToCamera = static_cast<int>(i);
+                }
+                ImGui::EndCombo();
+            }
+        }
+        ImGui::Text("camera speed %.2f m/s", m.cameraSpeed);
+        if (ImGui::Checkbox("vsync", &m.vsync)) a.vsyncChanged = true;
+    }
+
+    if (ImGui::CollapsingHeader("Settings", ImGuiTreeNodeFlags_DefaultOpen)) {
+        for (const SettingSpec& spec : settingSpecs()) settingWidget(spec, m);
+    }
+
+    if (ImGui::CollapsingHeader("GPU passes", ImGuiTreeNodeFlags_DefaultOpen) && m.timings) {
+        ImGui::TextDisabled("median of the last %zu frames", TimingHistory::kFrames);
+        if (ImGui::BeginTable("passes", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+            ImGui::TableSetupColumn("pass", ImGuiTableColumnFlags_WidthFixed, 90.0f);
+            ImGui::TableSetupColumn("ms", ImGuiTableColumnFlags_WidthFixed, 56.0f);
+            ImGui::TableSetupColumn("history", ImGuiTableColumnFlags_WidthStretch);
+            ImGui::TableHeadersRow();
+            for (const TimingHistory::Row& r : m.timings->rows()) {
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(r.name.c_str());
+                ImGui::TableNextColumn();
+                ImGui::Text("%7.3f", r.medianMs);
+                ImGui::TableNextColumn();
+                const std::string id = "##" + r.name;
+                ImGui::PlotLines(id.c_str(), r.history.data(), static_cast<int>(r.history.size()), 0, nullptr, 0.0f, FLT_MAX,
+                                 ImVec2(std::max(ImGui::GetContentRegionAvail().x, 40.0f), 16.0f));
+            }
+            ImGui::EndTable();
+        }
+        ImGui::Text("total GPU %.3f ms", m.timings->totalMedianMs());
+    }
+
+    if (ImGui::Button("Save capture (F12)")) a.capture = true;
+    if (!m.status.empty()) ImGui::TextWrapped("%s", m.status.c_str());
+    ImGui::PopItemWidth();
+    ImGui::End();
+    return a;
+}
+
+}  // namespace ppr::app

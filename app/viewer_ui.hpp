@@ -1,0 +1,94 @@
+#pragma once
+// The viewer's ImGui side: the ImGui context with its GLFW + Vulkan (1.86, render-pass based)
+// backends drawn through passes::UiPass, the rolling per-pass GPU timing history, and the "ppr"
+// panel (device, frame times, cameras, vsync, every --set setting, GPU timing table, capture).
+#include "renderer.hpp"
+#include "scene_source.hpp"
+#include "ui/ui_pass.hpp"
+
+#include <deque>
+#include <map>
+#include <string>
+#include <vector>
+
+struct GLFWwindow;
+
+namespace ppr::app {
+
+// Per-pass GPU times of the last kFrames frames, in the last frame's execution order.
+class TimingHistory {
+public:
+    static constexpr size_t kFrames = 60;
+    struct Row {
+        std::string name;
+        double medianMs = 0.0;
+        std::vector<float> history;  // oldest first
+    };
+    void add(const std::vector<graph::PassTiming>& frame);
+    std::vector<Row> rows() const;
+    double totalMedianMs() const;
+    std::vector<float> totals() const { return {totals_.begin(), totals_.end()}; }
+
+private:
+    std::vector<std::string> order_;
+    std::map<std::string, std::deque<float>> passes_;
+    std::deque<float> totals_;
+};
+
+// ImGui context and backends. The Vulkan backend is initialised against UiPass's render pass for the
+// swapchain format (re-initialised if a recreated swapchain changes format).
+class ImGuiLayer {
+public:
+    ImGuiLayer(const vk::Context& ctx, GLFWwindow* window, passes::UiPass& ui, VkFormat format, uint32_t imageCount);
+    ~ImGuiLayer();
+    ImGuiLayer(const ImGuiLayer&) = delete;
+    ImGuiLayer& operator=(const ImGuiLayer&) = delete;
+
+    void swapchainChanged(VkFormat format, uint32_t imageCount);  // device must be idle
+    void beginFrame();  // backends' NewFrame + ImGui::NewFrame
+    void endFrame();    // ImGui::Render (the draw data is recorded by the next addPass)
+    // The "ui" graph pass drawing the last endFrame()'s data over target.
+    graph::ImageHandle addPass(graph::RenderGraph& g, graph::ImageHandle target);
+
+    bool wantsMouse() const;
+    bool wantsKeyboard() const;
+    bool wantsTextInput() const;
+
+private:
+    void initVulkan(VkFormat format, uint32_t imageCount);
+    void shutdownVulkan();
+    const vk::Context& ctx_;
+    passes::UiPass& ui_;
+    VkDescriptorPool pool_ = VK_NULL_HANDLE;
+    VkFormat format_ = VK_FORMAT_UNDEFINED;
+    bool glfwBackend_ = false;
+    bool vulkanBackend_ = false;
+};
+
+// What the panel shows and edits.
+struct PanelModel {
+    const vk::DeviceInfo* device = nullptr;
+    VkExtent2D extent{};
+    double frameMs = 0.0;  // wall time per frame (average over the history)
+    double cpuMs = 0.0;    // CPU time spent building + recording + submitting a frame
+    const std::vector<ResolvedCamera>* cameras = nullptr;
+    int cameraIndex = -1;  // -1: free camera
+    float cameraSpeed = 0.0f;
+    bool vsync = true;
+    Settings* settings = nullptr;
+    const TimingHistory* timings = nullptr;
+    std::string status;  // last capture result or settings error
+};
+
+struct PanelActions {
+    int jumpToCamera = -1;
+    bool vsyncChanged = false;
+    bool capture = false;
+};
+
+PanelActions drawPanel(PanelModel& model);
+
+// F2: next value of the `debug` setting (wraps around). Returns the new value.
+std::string cycleDebugView(Settings& settings);
+
+}  // namespace ppr::app

@@ -1,0 +1,163 @@
+#!/usr/bin/env bash
+# ui.viewer_opens: `ppr view` opens a window on a private Xvfb display and draws the scene with the
+# ImGui panel; F2 (cycle the `debug` setting) changes the picture; F12 writes a capture; the viewer
+# exits cleanly with zero validation errors (it runs with --validation).
+#
+# usage: viewer_smoke.sh PPR_BINARY WORK_DIR
+# Environment knobs: PPR_UI_FRAMES (frame limit, a safety net: the script closes the viewer with
+# SIGTERM once the checks are done), PPR_UI_TIMEOUT (seconds to wait for each step, default 90).
+set -uo pipefail
+
+PPR=${1:?usage: viewer_smoke.sh PPR_BINARY WORK_DIR}
+WORK=${2:?usage: viewer_smoke.sh PPR_BINARY WORK_DIR}
+FRAMES=${PPR_UI_FRAMES:-3000}
+STEP_TIMEOUT=${PPR_UI_TIMEOUT:-90}
+
+fail() { echo "ui.viewer_opens: FAIL: $*" >&2; [ -f "$WORK/viewer.log" ] && sed 's/^/  viewer: /' "$WORK/viewer.log" >&2; exit 1; }
+note() { echo "ui.viewer_opens: $*"; }
+
+for tool in Xvfb xdotool xwd convert compare; do
+    command -v "$tool" >/dev/null 2>&1 || { echo "ui.viewer_opens: FAIL: '$tool' not installed (scripts/install-deps.sh installs it)"; exit 1; }
+done
+[ -x "$PPR" ] || fail "no executable at $PPR"
+
+rm -rf "$WORK"
+mkdir -p "$WORK/out"
+
+XVFB_PID=""
+VIEWER_PID=""
+cleanup() {
+    if [ -n "$VIEWER_PID" ] && kill -0 "$VIEWER_PID" 2>/dev/null; then
+        kill "$VIEWER_PID" 2>/dev/null
+        sleep 1
+        kill -9 "$VIEWER_PID" 2>/dev/null
+    fi
+    if [ -n "$XVFB_PID" ]; then
+        kill "$XVFB_PID" 2>/dev/null
+        wait "$XVFB_PID" 2>/dev/null
+    fi
+}
+trap cleanup EXIT
+
+# A private X server on the first free display number from 90 up (a number another test grabbed
+# in the meantime makes Xvfb exit at once: then try the next one).
+DISP=""
+for n in $(seq 90 160); do
+    [ -e "/tmp/.X$n-lock" ] || [ -e "/tmp/.X11-unix/X$n" ] && continue
+    Xvfb ":$n" -screen 0 1280x800x24 -nolisten tcp >"$WORK/xvfb.log" 2>&1 &
+    XVFB_PID=$!
+    up=""
+    for _ in $(seq 1 200); do  # ready = it answers a client, not merely has its socket
+        kill -0 "$XVFB_PID" 2>/dev/null || break
+        DISPLAY=":$n" xdotool getdisplaygeometry >/dev/null 2>&1 && { up=1; break; }
+        sleep 0.1
+    done
+    if [ -n "$up" ]; then DISP=$n; break; fi
+    kill "$XVFB_PID" 2>/dev/null
+    wait "$XVFB_PID" 2>/dev/null
+    XVFB_PID=""
+done
+[ -n "$DISP" ] || fail "could not start Xvfb on any display :90..:160 ($(tail -1 "$WORK/xvfb.log" 2>/dev/null))"
+export DISPLAY=":$DISP"
+unset WAYLAND_DISPLAY
+# Xvfb has no GPU driver behind it: lavapipe can present to it, a discrete GPU's driver usually cannot.
+export PPR_DEVICE=${PPR_DEVICE:-cpu}
+note "Xvfb on $DISPLAY"
+
+PPR_VIEWER_FRAMES=$FRAMES "$PPR" view --size 640x360 --validation --out "$WORK/out" >"$WORK/viewer.log" 2>&1 &
+VIEWER_PID=$!
+
+alive() { kill -0 "$VIEWER_PID" 2>/dev/null; }
+
+# Window geometry → WX WY WW WH.
+WID=""
+for _ in $(seq 1 $((STEP_TIMEOUT * 2))); do
+    alive || fail "viewer exited before its window appeared"
+    WID=$(xdotool search --onlyvisible --name '^ppr' 2>/dev/null | head -1)
+    [ -n "$WID" ] && break
+    sleep 0.5
+done
+[ -n "$WID" ] || fail "no window named 'ppr…' after ${STEP_TIMEOUT}s"
+eval "$(xdotool getwindowgeometry --shell "$WID")"
+WX=$X WY=$Y WW=$WIDTH WH=$HEIGHT
+note "window $WID at $WX,$WY size ${WW}x${WH}: $(xdotool getwindowname "$WID")"
+[ "$WW" -eq 640 ] && [ "$WH" -eq 360 ] || fail "window is ${WW}x${WH}, expected 640x360"
+
+# The scene region right of the ImGui panel (the panel's numbers change every frame; the scene of a
+# still camera does not).
+SX=$((WX + 400)) SY=$WY SW=$((WW - 400)) SH=$WH
+shot() {  # shot NAME → $WORK/NAME.png (whole window) and $WORK/NAME-scene.png
+    xwd -root -silent | convert xwd:- -crop "${WW}x${WH}+${WX}+${WY}" +repage "png:$WORK/$1.png" || fail "screenshot failed"
+    convert "$WORK/$1.png" -crop "${SW}x${SH}+$((SX - WX))+$((SY - WY))" +repage "png:$WORK/$1-scene.png"
+}
+stddev() { convert "$1" -format '%[fx:standard_deviation]' info:; }
+
+# 1. The window shows a picture (not a blank/black swapchain image).
+ok=""
+for _ in $(seq 1 $((STEP_TIMEOUT))); do
+    alive || fail "viewer exited before it drew a picture"
+    shot first
+    sd=$(stddev "$WORK/first-scene.png")
+    if awk "BEGIN{exit !($sd > 0.03)}"; then ok=1; break; fi
+    sleep 1
+done
+[ -n "$ok" ] || fail "the window stays blank (standard deviation $sd)"
+note "picture drawn (scene standard deviation $sd, whole window $(stddev "$WORK/first.png"))"
+
+# Frame-to-frame noise of a still camera (0 today; temporal techniques may add some): the F2 change
+# must stand well above it. Differences are counted with a 2% fuzz.
+differing() { compare -metric AE -fuzz 2% "$1" "$2" null: 2>&1 | awk '{print int($1)}'; }
+sleep 1
+shot before
+sleep 1
+shot still
+noise=$(differing "$WORK/before-scene.png" "$WORK/still-scene.png")
+note "still-camera noise: $noise pixels"
+
+# 2. F2 cycles the debug view (none → albedo): the scene region must change.
+xdotool mousemove --sync $((WX + WW - 100)) $((WY + WH / 2))
+xdotool windowfocus "$WID" 2>/dev/null
+sleep 0.3
+xdotool key F2
+ok=""
+for _ in $(seq 1 $((STEP_TIMEOUT))); do
+    alive || fail "viewer exited while waiting for F2 to take effect"
+    sleep 1
+    shot after
+    n=$(differing "$WORK/before-scene.png" "$WORK/after-scene.png")
+    [ "$n" -gt $((SW * SH / 20)) ] && [ "$n" -gt $((noise * 4)) ] && { ok=1; break; }
+done
+[ -n "$ok" ] || fail "F2 did not change the picture (only $n pixels differ)"
+note "F2 changed $n of $((SW * SH)) scene pixels"
+
+# 3. F12 writes a capture (final.png + report.json) of the current view.
+xdotool key F12
+ok=""
+for _ in $(seq 1 $((STEP_TIMEOUT))); do
+    alive || fail "viewer exited while capturing"
+    [ -s "$WORK/out/view-capture-1/report.json" ] && [ -s "$WORK/out/view-capture-1/final.png" ] && { ok=1; break; }
+    sleep 1
+done
+[ -n "$ok" ] || fail "F12 wrote no $WORK/out/view-capture-1/{final.png,report.json}"
+sleep 1  # report.json is written last; let it be complete
+grep -q '"validation_errors": 0' "$WORK/out/view-capture-1/report.json" || fail "report.json: validation_errors is not 0"
+grep -q '"final": "final.png"' "$WORK/out/view-capture-1/report.json" || fail "report.json does not name final.png"
+grep -q '"debug": "albedo"' "$WORK/out/view-capture-1/report.json" || fail "report.json does not hold the F2 setting (debug=albedo)"
+note "F12 wrote $WORK/out/view-capture-1"
+
+# 4. Clean exit: SIGTERM closes the window like the close button; exit code 0 = no validation errors.
+kill -TERM "$VIEWER_PID"
+rc=""
+for _ in $(seq 1 $((STEP_TIMEOUT * 2))); do
+    if ! alive; then wait "$VIEWER_PID"; rc=$?; break; fi
+    sleep 0.5
+done
+VIEWER_PID_DONE=$VIEWER_PID
+VIEWER_PID=""
+[ -n "$rc" ] || { kill -9 "$VIEWER_PID_DONE" 2>/dev/null; fail "viewer did not exit within ${STEP_TIMEOUT}s of SIGTERM"; }
+[ "$rc" -eq 0 ] || fail "viewer exit code $rc (1 = validation errors)"
+grep -q '^validation error' "$WORK/viewer.log" && fail "validation errors in the log"
+warnings=$(grep -c '^validation warning' "$WORK/viewer.log")
+[ "$warnings" -eq 0 ] || note "note: $warnings validation warning(s) in $WORK/viewer.log"
+note "PASS (viewer exit code 0, no validation errors)"
+exit 0
