@@ -1,0 +1,93 @@
+#pragma once
+// CPU-side scene: what the glTF loader produces and the renderer uploads. Flattened: every mesh
+// primitive instance becomes a DrawItem with its world matrix already resolved from the node hierarchy.
+#include "scene/camera.hpp"
+#include "scene/reflector.hpp"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace ppr::scene {
+
+struct Vertex {
+    glm::vec3 position;
+    glm::vec3 normal;
+    glm::vec4 tangent;  // xyz + handedness sign in w (glTF convention); generated when missing
+    glm::vec2 uv0;
+};
+static_assert(sizeof(Vertex) == 48);
+
+struct TextureImage {
+    std::string name;
+    uint32_t width = 0, height = 0;
+    std::vector<uint8_t> rgba8;  // always 4 channels
+    bool srgb = false;           // base colour: true; normal / metallic-roughness: false
+};
+
+struct Material {
+    std::string name;
+    glm::vec4 baseColorFactor{1.0f};
+    float metallicFactor = 1.0f;
+    float roughnessFactor = 1.0f;
+    float normalScale = 1.0f;
+    int baseColorTexture = -1;          // index into Scene::textures
+    int normalTexture = -1;
+    int metallicRoughnessTexture = -1;  // glTF: G = roughness, B = metallic
+    bool reflective = false;            // material extras {"ppr_reflective": true}
+};
+
+struct Mesh {  // one glTF primitive (triangles)
+    std::string name;
+    uint32_t firstIndex = 0;   // into Scene::indices
+    uint32_t indexCount = 0;
+    int32_t vertexOffset = 0;  // into Scene::vertices
+    int material = -1;         // -1 = default material
+    glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // object space
+};
+
+struct DrawItem {
+    uint32_t mesh = 0;
+    glm::mat4 world{1.0f};
+    std::string nodeName;
+    int reflector = -1;  // index into Scene::reflectors whose rectangle this surface lies in, or -1
+};
+
+struct NamedCamera {
+    std::string name;
+    CameraPose pose;
+};
+
+struct Scene {
+    std::string sourcePath;
+    std::vector<Vertex> vertices;
+    std::vector<uint32_t> indices;
+    std::vector<Mesh> meshes;
+    std::vector<Material> materials;
+    std::vector<TextureImage> textures;
+    std::vector<DrawItem> draws;
+    std::vector<NamedCamera> cameras;
+    std::vector<Reflector> reflectors;
+    glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // world space, all draws
+
+    const NamedCamera* findCamera(const std::string& name) const;
+};
+
+struct LoadOptions {
+    // Reflector file to use instead of the scene's own; empty = "<scene stem>.reflectors.json" beside
+    // the scene if it exists, otherwise the glTF node extras.
+    std::string reflectorFile;
+};
+
+// Loads a .gltf or .glb. Throws std::runtime_error with one line "<file>: <what> : <problem>" for any
+// bad input (missing file or buffer, malformed JSON, out-of-range indices/accessors, NaN/inf
+// positions, unsupported primitive mode...). Never crashes on malformed files.
+Scene loadGltf(const std::string& path, const LoadOptions& options = {});
+
+// Binds each draw to the reflector whose rectangle contains all of its (world-space) vertices on the
+// plane (within `tolerance` metres); node extras / name matches take precedence. Called by loadGltf.
+void bindDrawsToReflectors(Scene& scene, float tolerance = 0.01f);
+
+}  // namespace ppr::scene
