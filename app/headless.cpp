@@ -105,12 +105,7 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
             result.dot = rec.dot;
         }
         VK_CHECK(vkEndCommandBuffer(cmd));
-        VkCommandBufferSubmitInfo cbi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
-        cbi.commandBuffer = cmd;
-        VkSubmitInfo2 si{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
-        si.commandBufferInfoCount = 1;
-        si.pCommandBufferInfos = &cbi;
-        VK_CHECK(vkQueueSubmit2(ctx_.queue(), 1, &si, fences_[slot]));
+        vk::submit(ctx_, cmd, fences_[slot]);
         slotBusy_[slot] = true;
     }
     for (uint32_t s = 0; s < Renderer::kFramesInFlight; ++s) collect(s);

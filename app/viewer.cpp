@@ -353,22 +353,8 @@ bool Viewer::renderFrame(uint32_t slot) {
     if (!rec.cullLog.empty() && frames_ == 0) std::fprintf(stderr, "%s", rec.cullLog.c_str());
     VK_CHECK(vkEndCommandBuffer(cmd));
 
-    VkSemaphoreSubmitInfo wait{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
-    wait.semaphore = sync_.acquired[slot];
-    wait.stageMask = VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
-    VkSemaphoreSubmitInfo signal{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
-    signal.semaphore = swapchain_->renderFinished(imageIndex);
-    signal.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-    VkCommandBufferSubmitInfo cbi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
-    cbi.commandBuffer = cmd;
-    VkSubmitInfo2 si{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
-    si.waitSemaphoreInfoCount = 1;
-    si.pWaitSemaphoreInfos = &wait;
-    si.commandBufferInfoCount = 1;
-    si.pCommandBufferInfos = &cbi;
-    si.signalSemaphoreInfoCount = 1;
-    si.pSignalSemaphoreInfos = &signal;
-    VK_CHECK(vkQueueSubmit2(ctx_.queue(), 1, &si, sync_.fence[slot]));
+    vk::submit(ctx_, cmd, sync_.fence[slot], sync_.acquired[slot], VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+               swapchain_->renderFinished(imageIndex));
     sync_.busy[slot] = true;
 
     VkSemaphore renderFinished = swapchain_->renderFinished(imageIndex);

@@ -112,6 +112,11 @@ private:
     VkWriteDescriptorSet& next(VkDescriptorType type);
 };
 
+// vkCmdDispatch with enough square workgroups of `groupSize`² threads to cover `extent`.
+inline void dispatchCovering(VkCommandBuffer cmd, VkExtent2D extent, uint32_t groupSize) {
+    vkCmdDispatch(cmd, (extent.width + groupSize - 1) / groupSize, (extent.height + groupSize - 1) / groupSize, 1);
+}
+
 // Common samplers, created once per run.
 struct Samplers {
     VkSampler linearClamp = VK_NULL_HANDLE;

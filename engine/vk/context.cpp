@@ -333,15 +333,30 @@ void Context::immediateSubmit(const std::function<void(VkCommandBuffer)>& record
     VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     VkFence fence;
     VK_CHECK(vkCreateFence(device_, &fci, nullptr, &fence));
-    VkCommandBufferSubmitInfo cbi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
-    cbi.commandBuffer = cmd;
-    VkSubmitInfo2 si{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
-    si.commandBufferInfoCount = 1;
-    si.pCommandBufferInfos = &cbi;
-    VK_CHECK(vkQueueSubmit2(queue_, 1, &si, fence));
+    submit(*this, cmd, fence);
     VK_CHECK(vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX));
     vkDestroyFence(device_, fence, nullptr);
     vkFreeCommandBuffers(device_, uploadPool_, 1, &cmd);
+}
+
+void submit(const Context& ctx, VkCommandBuffer cmd, VkFence fence, VkSemaphore wait, VkPipelineStageFlags2 waitStage,
+            VkSemaphore signal) {
+    VkSemaphoreSubmitInfo waitInfo{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
+    waitInfo.semaphore = wait;
+    waitInfo.stageMask = waitStage;
+    VkSemaphoreSubmitInfo signalInfo{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
+    signalInfo.semaphore = signal;
+    signalInfo.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+    VkCommandBufferSubmitInfo cbi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
+    cbi.commandBuffer = cmd;
+    VkSubmitInfo2 si{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+    si.waitSemaphoreInfoCount = wait ? 1 : 0;
+    si.pWaitSemaphoreInfos = &waitInfo;
+    si.commandBufferInfoCount = 1;
+    si.pCommandBufferInfos = &cbi;
+    si.signalSemaphoreInfoCount = signal ? 1 : 0;
+    si.pSignalSemaphoreInfos = &signalInfo;
+    VK_CHECK(vkQueueSubmit2(ctx.queue(), 1, &si, fence));
 }
 
 }  // namespace ppr::vk

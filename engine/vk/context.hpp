@@ -88,6 +88,10 @@ private:
     PFN_vkCmdPushDescriptorSetKHR pushDescriptorSet_ = nullptr;
 };
 
+// One command buffer to the context's queue, optionally waiting on / signalling a semaphore.
+void submit(const Context& ctx, VkCommandBuffer cmd, VkFence fence, VkSemaphore wait = VK_NULL_HANDLE,
+            VkPipelineStageFlags2 waitStage = VK_PIPELINE_STAGE_2_NONE, VkSemaphore signal = VK_NULL_HANDLE);
+
 // GPU allocations through VMA. Owned objects destroy themselves.
 struct Buffer {
     VkBuffer buffer = VK_NULL_HANDLE;

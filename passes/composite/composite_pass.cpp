@@ -45,8 +45,7 @@ graph::ImageHandle CompositePass::add(graph::RenderGraph& g, const FrameInputs& 
                 .sampled(pc.view(data.gb.reflector), pc.layout(data.gb.reflector), s)
                 .storageImage(pc.view(data.out))
                 .push(cmd, pipeline_);
-            vkCmdDispatch(cmd, (in.extent.width + gpu::kLightingGroupSize - 1) / gpu::kLightingGroupSize,
-                          (in.extent.height + gpu::kLightingGroupSize - 1) / gpu::kLightingGroupSize, 1);
+            shader::dispatchCovering(cmd, in.extent, gpu::kLightingGroupSize);
         });
     return d.out;
 }

@@ -43,8 +43,7 @@ graph::ImageHandle LightingPass::add(graph::RenderGraph& g, const FrameInputs& i
                 .sampled(pc.view(data.shadow), pc.layout(data.shadow), s.shadowCompare)
                 .storageImage(pc.view(data.out))
                 .push(cmd, pipeline_);
-            vkCmdDispatch(cmd, (in.extent.width + gpu::kLightingGroupSize - 1) / gpu::kLightingGroupSize,
-                          (in.extent.height + gpu::kLightingGroupSize - 1) / gpu::kLightingGroupSize, 1);
+            shader::dispatchCovering(cmd, in.extent, gpu::kLightingGroupSize);
         });
     return d.out;
 }
