@@ -1,5 +1,7 @@
 #include "composite/composite_pass.hpp"
 
+#include "common/compute_pass.hpp"
+
 #include "composite_comp.h"
 #include "lighting/lighting.h"
 #include "lighting/lighting_pass.hpp"
@@ -15,39 +17,19 @@ CompositePass::CompositePass(const vk::Context& ctx) : ctx_(ctx) {
 }
 
 graph::ImageHandle CompositePass::add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::ImageHandle sceneColor) const {
-    struct Data {
-        GBuffer gb;
-        graph::ImageHandle color, out;
-    };
-    graph::ImageHandle out = g.createImage("composited", {in.extent.width, in.extent.height, LightingPass::kColorFormat, 1});
-    const Data& d = g.addPass<Data>(
-        "composite", graph::QueueKind::Compute,
-        [&](graph::PassBuilder& b, Data& data) {
-            data.color = b.sampled(sceneColor);
-            data.gb.depth = b.sampled(gb.depth);
-            data.gb.normal = b.sampled(gb.normal);
-            data.gb.albedo = b.sampled(gb.albedo);
-            data.gb.material = b.sampled(gb.material);
-            data.gb.reflector = b.sampled(gb.reflector);
-            data.out = b.storageWrite(out);
-        },
-        [this, in](const Data& data, graph::PassContext& pc) {
-            VkCommandBuffer cmd = pc.cmd();
-            VkSampler s = in.samplers->nearestClamp;
-            pipeline_.bind(cmd);
-            shader::PushDescriptors(ctx_)
-                .uniformBuffer(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
-                .sampled(pc.view(data.color), pc.layout(data.color), s)
-                .sampled(pc.view(data.gb.depth), pc.layout(data.gb.depth), s)
-                .sampled(pc.view(data.gb.normal), pc.layout(data.gb.normal), s)
-                .sampled(pc.view(data.gb.albedo), pc.layout(data.gb.albedo), s)
-                .sampled(pc.view(data.gb.material), pc.layout(data.gb.material), s)
-                .sampled(pc.view(data.gb.reflector), pc.layout(data.gb.reflector), s)
-                .storageImage(pc.view(data.out))
-                .push(cmd, pipeline_);
-            shader::dispatchCovering(cmd, in.extent, gpu::kLightingGroupSize);
-        });
-    return d.out;
+    const VkSampler s = in.samplers->nearestClamp;
+    graph::ImageHandle out;
+    ComputePass(g, ctx_, "composite", pipeline_)
+        .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
+        .sampled(sceneColor, s)
+        .sampled(gb.depth, s)
+        .sampled(gb.normal, s)
+        .sampled(gb.albedo, s)
+        .sampled(gb.material, s)
+        .sampled(gb.reflector, s)
+        .storageWrite(g.createImage("composited", {in.extent.width, in.extent.height, LightingPass::kColorFormat, 1}), &out)
+        .dispatch(in.extent, gpu::kLightingGroupSize);
+    return out;
 }
 
 }  // namespace ppr::passes

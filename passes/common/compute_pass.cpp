@@ -1,0 +1,117 @@
+#include "common/compute_pass.hpp"
+
+#include <utility>
+
+namespace ppr::passes {
+
+ComputePass& ComputePass::uniform(VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range) {
+    Binding b{Kind::Uniform};
+    b.rawBuffer = buffer;
+    b.offset = offset;
+    b.range = range;
+    bindings_.push_back(b);
+    return *this;
+}
+
+ComputePass& ComputePass::sampled(graph::ImageHandle image, VkSampler sampler) {
+    Binding b{Kind::Sampled, graph::Access::Sampled};
+    b.image = image;
+    b.sampler = sampler;
+    bindings_.push_back(b);
+    return *this;
+}
+
+ComputePass& ComputePass::storageRead(graph::ImageHandle image) {
+    Binding b{Kind::StorageImage, graph::Access::StorageRead};
+    b.image = image;
+    bindings_.push_back(b);
+    return *this;
+}
+
+ComputePass& ComputePass::storageWrite(graph::ImageHandle image, graph::ImageHandle* written) {
+    Binding b{Kind::StorageImage, graph::Access::StorageWrite};
+    b.image = image;
+    b.writtenImage = written;
+    bindings_.push_back(b);
+    return *this;
+}
+
+ComputePass& ComputePass::storageReadWrite(graph::ImageHandle image, graph::ImageHandle* written) {
+    Binding b{Kind::StorageImage, graph::Access::StorageReadWrite};
+    b.image = image;
+    b.writtenImage = written;
+    bindings_.push_back(b);
+    return *this;
+}
+
+ComputePass& ComputePass::storageRead(graph::BufferHandle buffer) {
+    Binding b{Kind::StorageBuffer, graph::Access::StorageRead};
+    b.buffer = buffer;
+    bindings_.push_back(b);
+    return *this;
+}
+
+ComputePass& ComputePass::storageWrite(graph::BufferHandle buffer, graph::BufferHandle* written) {
+    Binding b{Kind::StorageBuffer, graph::Access::StorageWrite};
+    b.buffer = buffer;
+    b.writtenBuffer = written;
+    bindings_.push_back(b);
+    return *this;
+}
+
+void ComputePass::dispatch(VkExtent2D extent, uint32_t groupSize) { add(extent, groupSize, std::nullopt, 0); }
+
+void ComputePass::dispatchIndirect(graph::BufferHandle args, VkDeviceSize offset) { add({}, 0, args, offset); }
+
+void ComputePass::add(VkExtent2D extent, uint32_t groupSize, std::optional<graph::BufferHandle> indirect, VkDeviceSize indirectOffset) {
+    struct Data {
+        std::vector<Binding> bindings;  // handles as declared (the versions this pass uses)
+        std::optional<graph::BufferHandle> indirect;
+    };
+    const vk::Context& ctx = ctx_;
+    const shader::Pipeline& pipeline = pipeline_;
+    std::vector<uint8_t> constants = std::move(pushConstants_);
+    graph_.addPass<Data>(
+        name_, graph::QueueKind::Compute,
+        [&](graph::PassBuilder& b, Data& data) {
+            for (Binding binding : bindings_) {
+                if (binding.kind == Kind::Sampled) binding.image = b.sampled(binding.image);
+                else if (binding.kind == Kind::StorageImage) {
+                    graph::ImageHandle h = binding.access == graph::Access::StorageRead    ? b.storageRead(binding.image)
+                                           : binding.access == graph::Access::StorageWrite ? b.storageWrite(binding.image)
+                                                                                           : b.storageReadWrite(binding.image);
+                    if (binding.writtenImage) *binding.writtenImage = h;
+                    binding.image = h;
+                } else if (binding.kind == Kind::StorageBuffer) {
+                    graph::BufferHandle h = binding.access == graph::Access::StorageRead ? b.storageRead(binding.buffer)
+                                                                                         : b.storageWrite(binding.buffer);
+                    if (binding.writtenBuffer) *binding.writtenBuffer = h;
+                    binding.buffer = h;
+                }
+                binding.writtenImage = nullptr;
+                binding.writtenBuffer = nullptr;
+                data.bindings.push_back(binding);
+            }
+            if (indirect) data.indirect = b.indirectArgs(*indirect);
+        },
+        [&ctx, &pipeline, constants, extent, groupSize, indirectOffset](const Data& data, graph::PassContext& pc) {
+            VkCommandBuffer cmd = pc.cmd();
+            pipeline.bind(cmd);
+            shader::PushDescriptors writes(ctx);
+            for (const Binding& b : data.bindings) {
+                switch (b.kind) {
+                    case Kind::Uniform: writes.uniformBuffer(b.rawBuffer, b.offset, b.range); break;
+                    case Kind::Sampled: writes.sampled(pc.view(b.image), pc.layout(b.image), b.sampler); break;
+                    case Kind::StorageImage: writes.storageImage(pc.view(b.image)); break;
+                    case Kind::StorageBuffer: writes.storageBuffer(pc.buffer(b.buffer)); break;
+                }
+            }
+            writes.push(cmd, pipeline);
+            if (!constants.empty()) pipeline.pushConstants(cmd, constants.data(), static_cast<uint32_t>(constants.size()));
+            if (data.indirect) pc.dispatchIndirect(*data.indirect, indirectOffset);
+            else shader::dispatchCovering(cmd, extent, groupSize);
+        });
+    bindings_.clear();
+}
+
+}  // namespace ppr::passes
