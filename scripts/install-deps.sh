@@ -9,11 +9,11 @@ if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 export DEBIAN_FRONTEND=noninteractive
 
 BOOKWORM_PKGS=(
-  build-essential cmake pkg-config git
-  libvulkan-dev vulkan-validationlayers glslang-tools glslang-dev spirv-tools
+  build-essential cmake pkg-config
+  libvulkan-dev vulkan-validationlayers glslang-tools glslang-dev
   libglfw3-dev libglm-dev libtinygltf-dev libimgui-dev libstb-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev
-  xvfb xauth xdotool x11-apps imagemagick graphviz assimp-testmodels python3
+  xvfb xauth xdotool x11-apps imagemagick graphviz assimp-testmodels
 )
 BACKPORTS_PKGS=(mesa-vulkan-drivers)
 TRIXIE_PKGS=(libvulkan-memory-allocator-dev)

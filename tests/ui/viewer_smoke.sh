@@ -145,7 +145,25 @@ grep -q '"final": "final.png"' "$WORK/out/view-capture-1/report.json" || fail "r
 grep -q '"debug": "albedo"' "$WORK/out/view-capture-1/report.json" || fail "report.json does not hold the F2 setting (debug=albedo)"
 note "F12 wrote $WORK/out/view-capture-1"
 
-# 4. Clean exit: SIGTERM closes the window like the close button; exit code 0 = no validation errors.
+# 4. Resize: the swapchain is recreated and the bigger window shows a picture over its whole width.
+xdotool windowsize "$WID" 800 450
+ok=""
+for _ in $(seq 1 $((STEP_TIMEOUT))); do
+    alive || fail "viewer exited after the resize"
+    sleep 1
+    eval "$(xdotool getwindowgeometry --shell "$WID")"
+    [ "$WIDTH" -eq 800 ] && [ "$HEIGHT" -eq 450 ] || continue
+    WW=$WIDTH WH=$HEIGHT SW=$((WIDTH - 400)) SH=$HEIGHT
+    shot resized
+    # The strip that did not exist at 640x360 must be drawn too (not left black by an old swapchain).
+    convert "$WORK/resized.png" -crop "160x450+640+0" +repage "png:$WORK/resized-strip.png"
+    sd=$(stddev "$WORK/resized-strip.png")
+    awk "BEGIN{exit !($sd > 0.03)}" && { ok=1; break; }
+done
+[ -n "$ok" ] || fail "after resizing to 800x450 the new area stays blank (standard deviation ${sd:-n/a})"
+note "resized to 800x450, new area drawn (standard deviation $sd)"
+
+# 5. Clean exit: SIGTERM closes the window like the close button; exit code 0 = no validation errors.
 kill -TERM "$VIEWER_PID"
 rc=""
 for _ in $(seq 1 $((STEP_TIMEOUT * 2))); do
