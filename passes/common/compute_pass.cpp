@@ -4,58 +4,47 @@
 
 namespace ppr::passes {
 
-ComputePass& ComputePass::uniform(VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range) {
-    Binding b{Kind::Uniform};
-    b.rawBuffer = buffer;
-    b.offset = offset;
-    b.range = range;
+ComputePass& ComputePass::bind(Kind kind, graph::Access access, graph::ImageHandle image, graph::BufferHandle buffer) {
+    Binding b{kind, access};
+    b.image = image;
+    b.buffer = buffer;
     bindings_.push_back(b);
+    return *this;
+}
+
+ComputePass& ComputePass::uniform(VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range) {
+    bind(Kind::Uniform, graph::Access::UniformRead, {}, {});
+    bindings_.back().rawBuffer = buffer;
+    bindings_.back().offset = offset;
+    bindings_.back().range = range;
     return *this;
 }
 
 ComputePass& ComputePass::sampled(graph::ImageHandle image, VkSampler sampler) {
-    Binding b{Kind::Sampled, graph::Access::Sampled};
-    b.image = image;
-    b.sampler = sampler;
-    bindings_.push_back(b);
+    bind(Kind::Sampled, graph::Access::Sampled, image, {});
+    bindings_.back().sampler = sampler;
     return *this;
 }
 
-ComputePass& ComputePass::storageRead(graph::ImageHandle image) {
-    Binding b{Kind::StorageImage, graph::Access::StorageRead};
-    b.image = image;
-    bindings_.push_back(b);
-    return *this;
-}
+ComputePass& ComputePass::storageRead(graph::ImageHandle image) { return bind(Kind::StorageImage, graph::Access::StorageRead, image, {}); }
 
 ComputePass& ComputePass::storageWrite(graph::ImageHandle image, graph::ImageHandle* written) {
-    Binding b{Kind::StorageImage, graph::Access::StorageWrite};
-    b.image = image;
-    b.writtenImage = written;
-    bindings_.push_back(b);
+    bind(Kind::StorageImage, graph::Access::StorageWrite, image, {});
+    bindings_.back().writtenImage = written;
     return *this;
 }
 
 ComputePass& ComputePass::storageReadWrite(graph::ImageHandle image, graph::ImageHandle* written) {
-    Binding b{Kind::StorageImage, graph::Access::StorageReadWrite};
-    b.image = image;
-    b.writtenImage = written;
-    bindings_.push_back(b);
+    bind(Kind::StorageImage, graph::Access::StorageReadWrite, image, {});
+    bindings_.back().writtenImage = written;
     return *this;
 }
 
-ComputePass& ComputePass::storageRead(graph::BufferHandle buffer) {
-    Binding b{Kind::StorageBuffer, graph::Access::StorageRead};
-    b.buffer = buffer;
-    bindings_.push_back(b);
-    return *this;
-}
+ComputePass& ComputePass::storageRead(graph::BufferHandle buffer) { return bind(Kind::StorageBuffer, graph::Access::StorageRead, {}, buffer); }
 
 ComputePass& ComputePass::storageWrite(graph::BufferHandle buffer, graph::BufferHandle* written) {
-    Binding b{Kind::StorageBuffer, graph::Access::StorageWrite};
-    b.buffer = buffer;
-    b.writtenBuffer = written;
-    bindings_.push_back(b);
+    bind(Kind::StorageBuffer, graph::Access::StorageWrite, {}, buffer);
+    bindings_.back().writtenBuffer = written;
     return *this;
 }
 

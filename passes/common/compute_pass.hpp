@@ -54,6 +54,7 @@ private:
         VkDeviceSize offset = 0, range = 0;
         VkSampler sampler = VK_NULL_HANDLE;
     };
+    ComputePass& bind(Kind kind, graph::Access access, graph::ImageHandle image, graph::BufferHandle buffer);
     void add(VkExtent2D extent, uint32_t groupSize, std::optional<graph::BufferHandle> indirect, VkDeviceSize indirectOffset);
 
     graph::RenderGraph& graph_;
