@@ -60,8 +60,8 @@ GraphExecutor::GraphExecutor(const vk::Context& ctx, uint32_t framesInFlight, ui
 }
 
 GraphExecutor::~GraphExecutor() {
-    for (PooledImage& p : images_) vk::destroyImage(ctx_, p.image);
-    for (PooledBuffer& p : buffers_) vk::destroyBuffer(ctx_, p.buffer);
+    for (PooledImage& p : images_) vk::destroyImage(ctx_, p.object);
+    for (PooledBuffer& p : buffers_) vk::destroyBuffer(ctx_, p.object);
     if (queryPool_) vkDestroyQueryPool(ctx_.device(), queryPool_, nullptr);
 }
 
@@ -91,40 +91,16 @@ void GraphExecutor::execute(RenderGraph& graph, VkCommandBuffer cmd, uint32_t fr
         } else if (r.importedBuffer) {
             r.buffer = r.importedBuffer->buffer;
         } else if (used[id] && r.isImage) {
-            PooledImage* hit = nullptr;
-            for (PooledImage& p : images_)
-                if (!p.inUse && p.desc == r.imageDesc && (p.usage & r.imageUsage) == r.imageUsage) hit = &p;
-            if (!hit) {
-                PooledImage p;
-                p.desc = r.imageDesc;
-                p.usage = r.imageUsage;
-                p.image = vk::createImage(ctx_, {r.imageDesc.width, r.imageDesc.height}, r.imageDesc.format,
-                                          r.imageUsage, r.imageDesc.mipLevels, "graph:" + r.name);
-                ++allocations_;
-                images_.push_back(p);
-                hit = &images_.back();
-            }
-            hit->inUse = true;
-            hit->lastUsedFrame = frameCounter_;
-            r.image = hit->image.image;
-            r.view = hit->image.view;
+            const vk::Image& img = acquire(images_, r.imageDesc, r.imageUsage, [&] {
+                return vk::createImage(ctx_, {r.imageDesc.width, r.imageDesc.height}, r.imageDesc.format, r.imageUsage,
+                                       r.imageDesc.mipLevels, "graph:" + r.name);
+            }).object;
+            r.image = img.image;
+            r.view = img.view;
         } else if (used[id]) {
-            PooledBuffer* hit = nullptr;
-            for (PooledBuffer& p : buffers_)
-                if (!p.inUse && p.desc == r.bufferDesc && (p.usage & r.bufferUsage) == r.bufferUsage) hit = &p;
-            if (!hit) {
-                PooledBuffer p;
-                p.desc = r.bufferDesc;
-                p.usage = r.bufferUsage;
-                p.buffer = vk::createBuffer(ctx_, r.bufferDesc.size, r.bufferUsage, vk::MemoryUse::GpuOnly,
-                                            "graph:" + r.name);
-                ++allocations_;
-                buffers_.push_back(p);
-                hit = &buffers_.back();
-            }
-            hit->inUse = true;
-            hit->lastUsedFrame = frameCounter_;
-            r.buffer = hit->buffer.buffer;
+            r.buffer = acquire(buffers_, r.bufferDesc, r.bufferUsage, [&] {
+                return vk::createBuffer(ctx_, r.bufferDesc.size, r.bufferUsage, vk::MemoryUse::GpuOnly, "graph:" + r.name);
+            }).object.buffer;
         }
     }
     // Everything recorded here is only submitted later; the pool is free for the next execute() as the
@@ -247,16 +223,29 @@ std::vector<PassTiming> GraphExecutor::readTimings(uint32_t frameSlot) {
 }
 
 void GraphExecutor::trimPool(uint32_t unusedFrames) {
-    for (size_t i = images_.size(); i-- > 0;) {
-        if (images_[i].lastUsedFrame + unusedFrames >= frameCounter_) continue;
-        vk::destroyImage(ctx_, images_[i].image);
-        images_.erase(images_.begin() + static_cast<std::ptrdiff_t>(i));
+    auto stale = [&](const auto& entry) { return entry.lastUsedFrame + unusedFrames < frameCounter_; };
+    for (PooledImage& p : images_)
+        if (stale(p)) vk::destroyImage(ctx_, p.object);
+    for (PooledBuffer& p : buffers_)
+        if (stale(p)) vk::destroyBuffer(ctx_, p.object);
+    std::erase_if(images_, stale);
+    std::erase_if(buffers_, stale);
+}
+
+template <class Entry, class Create>
+Entry& GraphExecutor::acquire(std::vector<Entry>& pool, const decltype(Entry::desc)& desc, decltype(Entry::usage) usage,
+                              Create&& create) {
+    Entry* hit = nullptr;
+    for (Entry& p : pool)
+        if (!p.inUse && p.desc == desc && (p.usage & usage) == usage) hit = &p;
+    if (!hit) {
+        pool.push_back(Entry{desc, usage, create()});
+        ++allocations_;
+        hit = &pool.back();
     }
-    for (size_t i = buffers_.size(); i-- > 0;) {
-        if (buffers_[i].lastUsedFrame + unusedFrames >= frameCounter_) continue;
-        vk::destroyBuffer(ctx_, buffers_[i].buffer);
-        buffers_.erase(buffers_.begin() + static_cast<std::ptrdiff_t>(i));
-    }
+    hit->inUse = true;
+    hit->lastUsedFrame = frameCounter_;
+    return *hit;
 }
 
 }  // namespace ppr::graph

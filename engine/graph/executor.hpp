@@ -41,20 +41,19 @@ public:
     uint64_t poolAllocations() const { return allocations_; }  // total ever created, for "no per-frame allocation" tests
 
 private:
-    struct PooledImage {
-        ImageDesc desc;
-        VkImageUsageFlags usage = 0;
-        vk::Image image;
+    // One pooled GPU object, reusable by any transient with the same descriptor and a subset of its usage.
+    template <class Desc, class Usage, class Object>
+    struct Pooled {
+        Desc desc;
+        Usage usage = 0;
+        Object object;
         uint64_t lastUsedFrame = 0;
         bool inUse = false;
     };
-    struct PooledBuffer {
-        BufferDesc desc;
-        VkBufferUsageFlags usage = 0;
-        vk::Buffer buffer;
-        uint64_t lastUsedFrame = 0;
-        bool inUse = false;
-    };
+    using PooledImage = Pooled<ImageDesc, VkImageUsageFlags, vk::Image>;
+    using PooledBuffer = Pooled<BufferDesc, VkBufferUsageFlags, vk::Buffer>;
+    template <class Entry, class Create>
+    Entry& acquire(std::vector<Entry>& pool, const decltype(Entry::desc)& desc, decltype(Entry::usage) usage, Create&& create);
     struct TimingSlot {
         std::vector<std::string> passNames;
         uint32_t queryCount = 0;

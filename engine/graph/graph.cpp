@@ -25,49 +25,47 @@ bool isAttachment(Access a) {
 
 // ---- resources -----------------------------------------------------------------------------------
 
+uint32_t RenderGraph::addResource(Resource r) {
+    checkUniqueName(resources_, r.name);
+    resources_.push_back(std::move(r));
+    return static_cast<uint32_t>(resources_.size() - 1);
+}
+
 ImageHandle RenderGraph::createImage(std::string name, const ImageDesc& desc) {
     if (desc.width == 0 || desc.height == 0 || desc.format == VK_FORMAT_UNDEFINED || desc.mipLevels == 0)
         fail("image '" + name + "' has an empty extent, no mip level or an undefined format");
-    checkUniqueName(resources_, name);
     Resource r;
     r.name = std::move(name);
     r.imageDesc = desc;
-    resources_.push_back(std::move(r));
-    return {static_cast<uint32_t>(resources_.size() - 1), 0};
+    return {addResource(std::move(r)), 0};
 }
 
 BufferHandle RenderGraph::createBuffer(std::string name, const BufferDesc& desc) {
     if (desc.size == 0) fail("buffer '" + name + "' has size 0");
-    checkUniqueName(resources_, name);
     Resource r;
     r.name = std::move(name);
     r.isImage = false;
     r.bufferDesc = desc;
-    resources_.push_back(std::move(r));
-    return {static_cast<uint32_t>(resources_.size() - 1), 0};
+    return {addResource(std::move(r)), 0};
 }
 
 ImageHandle RenderGraph::importImage(std::string name, ExternalImage* image) {
     if (!image) fail("importImage('" + name + "') got a null ExternalImage");
-    checkUniqueName(resources_, name);
     Resource r;
     r.name = std::move(name);
     r.imageDesc = image->desc;
     r.importedImage = image;
-    resources_.push_back(std::move(r));
-    return {static_cast<uint32_t>(resources_.size() - 1), 0};
+    return {addResource(std::move(r)), 0};
 }
 
 BufferHandle RenderGraph::importBuffer(std::string name, ExternalBuffer* buffer) {
     if (!buffer) fail("importBuffer('" + name + "') got a null ExternalBuffer");
-    checkUniqueName(resources_, name);
     Resource r;
     r.name = std::move(name);
     r.isImage = false;
     r.bufferDesc = buffer->desc;
     r.importedBuffer = buffer;
-    resources_.push_back(std::move(r));
-    return {static_cast<uint32_t>(resources_.size() - 1), 0};
+    return {addResource(std::move(r)), 0};
 }
 
 uint32_t RenderGraph::resourceId(const std::string& name) const {

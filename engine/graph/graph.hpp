@@ -258,6 +258,7 @@ private:
         bool customRendering = false;
     };
 
+    uint32_t addResource(Resource r);  // checks the name is unique; returns the id
     uint32_t beginPass(std::string name, QueueKind kind);
     uint32_t declare(uint32_t pass, uint32_t resource, uint32_t version, bool isImage, Access access);
     const Resource& resourceFor(uint32_t pass, uint32_t id, bool isImage) const;
