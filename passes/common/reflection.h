@@ -1,0 +1,13 @@
+// The reflection image every technique writes (RGBA16F, one per frame) and the composite reads:
+// rgb = reflected radiance (linear HDR, unweighted by Fresnel), a = what kind of value it is.
+// `ppr compare` reads the same alpha codes back, so they are defined once here.
+#ifndef PPR_REFLECTION_H
+#define PPR_REFLECTION_H
+#include "shader/shared.h"
+
+PPR_CONST(float, kReflectionNone, 0.0f)       // no reflection (not a reflector pixel, or a PPR hole)
+PPR_CONST(float, kReflectionHit, 1.0f)        // a reflection; for `planar`: the reflected point is visible in the main view
+PPR_CONST(float, kReflectionFilled, 0.75f)    // PPR: taken from a neighbour by hole filling
+PPR_CONST(float, kReflectionOffscreen, 0.5f)  // planar: reflected point off screen, occluded in the main view, or sky
+
+#endif
