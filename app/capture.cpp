@@ -21,6 +21,7 @@ int runCapture(const Options& o) {
 
     Renderer renderer(*ctx, scene);
     for (const std::string& kv : o.sets) renderer.settings().apply(kv);
+    renderer.setTechnique(o.technique);
     HeadlessRenderer headless(*ctx, renderer);
     const VkExtent2D extent{o.width, o.height};
     const uint32_t frames = o.frames ? o.frames : 5;
@@ -42,6 +43,7 @@ int runCapture(const Options& o) {
         info.pose = cam.pose;
         info.size = extent;
         info.technique = o.technique;
+        info.reflectors = renderer.reflectors().size();
         info.settings = &renderer.settings();
         info.validationEnabled = ctx->validationEnabled();
         info.validationErrors = ctx->validationErrors() - errorsBefore;

@@ -23,25 +23,19 @@ uint32_t parseUnsigned(const std::string& option, const std::string& text, uint3
 
 }  // namespace
 
-const std::vector<std::string>& availableTechniques() {
-    // Reflection techniques join this list as they land (ppr, ssr-*, planar); "none" renders the
-    // lit scene without reflections.
-    static const std::vector<std::string> list = {"none"};
-    return list;
-}
-
 std::string usage() {
     return "usage: ppr [view|capture|compare|bench] [options]\n"
            "  view                 interactive window (default when a display is present)\n"
            "  capture              render headless, write final.png + report.json (default without a display)\n"
+           "  compare              render techniques and the planar ground truth; write contact.png + metrics.json\n"
            "options:\n"
            "  --scene FILE         .gltf or .glb (default: the built-in default scene)\n"
            "  --reflectors FILE    reflector JSON (default: <scene>.reflectors.json or glTF node extras)\n"
            "  --camera NAME|x,y,z,yawDeg,pitchDeg[,fovYDeg]\n"
            "                       capture: default = every named camera; view: the first one\n"
-           "  --size WxH           default 1280x720 (16..8192 per side)\n"
-           "  --technique T        none (reflection techniques arrive with later features)\n"
-           "  --set key=value      repeatable; keys: debug, exposure, shadowres\n"
+           "  --size WxH           default 1280x720 (16..8192 per side; ppr: at most 4096, its offsets are 12-bit)\n"
+           "  --technique T        ppr (default) | planar (ground truth) | none; compare: repeatable\n"
+           "  --set key=value      repeatable; keys: debug, exposure, shadowres, holes, filter, antibleed\n"
            "  --frames N           frames to render (capture default 5: median GPU times over them)\n"
            "  --out DIR            output directory (default out)\n"
            "  --validation         Khronos validation + synchronization validation; any error exits 1\n"
@@ -77,12 +71,12 @@ Options parseCommandLine(int argc, const char* const* argv) {
         else if (a == "--frames") o.frames = parseUnsigned(a, value(a), 1, kMaxFrames);
         else if (a == "--technique") {
             o.technique = value(a);
-            const auto& t = availableTechniques();
-            if (std::find(t.begin(), t.end(), o.technique) == t.end()) {
+            if (!isTechnique(o.technique)) {
                 std::string list;
-                for (const std::string& s : t) list += (list.empty() ? "" : ", ") + s;
+                for (const std::string& s : techniqueNames()) list += (list.empty() ? "" : ", ") + s;
                 throw std::runtime_error("--technique " + o.technique + ": not available in this build (available: " + list + ")");
             }
+            o.techniques.push_back(o.technique);
         } else if (a == "--size") {
             std::string s = value(a);
             size_t x = s.find('x');
@@ -97,9 +91,15 @@ Options parseCommandLine(int argc, const char* const* argv) {
             throw std::runtime_error("unknown option '" + a + "' (see ppr --help)");
         }
     }
-    if (o.mode == Mode::Compare || o.mode == Mode::Bench)
-        throw std::runtime_error(std::string(o.mode == Mode::Compare ? "compare" : "bench") +
-                                 ": needs reflection techniques, which are not in this build yet (available commands: view, capture)");
+    if (o.mode == Mode::Bench)
+        throw std::runtime_error("bench: not in this build yet (available commands: view, capture, compare)");
+    if (o.mode == Mode::Compare && o.techniques.empty()) o.techniques = {"ppr"};
+    const bool usesPpr = o.mode == Mode::Compare ? std::find(o.techniques.begin(), o.techniques.end(), "ppr") != o.techniques.end()
+                                                 : o.technique == "ppr";
+    if (usesPpr && std::max(o.width, o.height) > kPprMaxSize)
+        throw std::runtime_error("--size " + std::to_string(o.width) + "x" + std::to_string(o.height) +
+                                 ": PPR encodes offsets with 12-bit integer parts, so it runs at most " + std::to_string(kPprMaxSize) +
+                                 " px per side (use --technique planar or none for larger sizes)");
     return o;
 }
 

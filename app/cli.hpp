@@ -3,6 +3,7 @@
 //   ppr [view|capture|compare|bench] [--scene F] [--reflectors F] [--camera NAME|x,y,z,yaw,pitch[,fov]]
 //       [--size WxH] [--technique T] [--set key=value]... [--frames N] [--out DIR] [--validation]
 #include "settings.hpp"
+#include "techniques.hpp"
 
 #include <optional>
 #include <string>
@@ -18,7 +19,8 @@ struct Options {
     std::string reflectors;  // empty = scene sidecar / glTF extras
     std::string camera;      // empty = every named camera (capture) / the first (view)
     uint32_t width = 1280, height = 720;
-    std::string technique = "none";
+    std::string technique = "ppr";        // capture / view: the last --technique given
+    std::vector<std::string> techniques;  // compare: every --technique given, in order (default: ppr)
     std::vector<std::string> sets;  // validated "key=value" assignments, in order
     uint32_t frames = 0;            // 0 = mode default
     std::string out = "out";
@@ -29,11 +31,11 @@ struct Options {
 
 constexpr uint32_t kMinSize = 16;
 constexpr uint32_t kMaxSize = 8192;
+constexpr uint32_t kPprMaxSize = 4096;  // = gpu::kPprMaxExtent (ppr_common/encoding.h)
 constexpr uint32_t kMaxFrames = 100000;
 
 // Throws std::runtime_error with one line naming the option and the problem.
 Options parseCommandLine(int argc, const char* const* argv);
 std::string usage();
-const std::vector<std::string>& availableTechniques();
 
 }  // namespace ppr::app

@@ -36,6 +36,7 @@ HeadlessRenderer::~HeadlessRenderer() {
     for (VkFence f : fences_) vkDestroyFence(ctx_.device(), f, nullptr);
     vkDestroyCommandPool(ctx_.device(), pool_, nullptr);
     vk::destroyBuffer(ctx_, readback_);
+    vk::destroyBuffer(ctx_, reflectionReadback_);
     vk::destroyImage(ctx_, target_);
 }
 
@@ -44,6 +45,7 @@ void HeadlessRenderer::ensureTargets(VkExtent2D extent) {
     if (readback_.buffer && target_.extent.width == extent.width && target_.extent.height == extent.height) return;
     vkDeviceWaitIdle(ctx_.device());
     vk::destroyBuffer(ctx_, readback_);
+    vk::destroyBuffer(ctx_, reflectionReadback_);
     vk::destroyImage(ctx_, target_);
     target_ = vk::createImage(ctx_, extent, Renderer::kCaptureFormat,
                               VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, 1, "capture target");
@@ -56,15 +58,22 @@ void HeadlessRenderer::ensureTargets(VkExtent2D extent) {
     readbackImport_.buffer = readback_.buffer;
     readbackImport_.desc = {bytes};
     readbackImport_.finalAccess = graph::Access::HostRead;
+    reflectionReadback_ = vk::createBuffer(ctx_, bytes * 2, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "reflection readback");
+    reflectionImport_ = {};
+    reflectionImport_.buffer = reflectionReadback_.buffer;
+    reflectionImport_.desc = {bytes * 2};
+    reflectionImport_.finalAccess = graph::Access::HostRead;
 }
 
-CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExtent2D extent, uint32_t frames, bool dumpGraph) {
+CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExtent2D extent, uint32_t frames, bool dumpGraph,
+                                        bool readReflection) {
     ensureTargets(extent);
     frames = std::max(frames, 1u);
     CaptureResult result;
     result.frames = frames;
     std::map<std::string, std::vector<double>> perPass;
     std::vector<double> totals;
+    bool reflectionCopied = false;
     auto collect = [&](uint32_t slot) {
         if (!slotBusy_[slot]) return;
         VK_CHECK(vkWaitForFences(ctx_.device(), 1, &fences_[slot], VK_TRUE, UINT64_MAX));
@@ -98,9 +107,11 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
         req.target = &targetImport_;
         const bool last = f + 1 == frames;
         req.readback = last ? &readbackImport_ : nullptr;
+        req.reflectionReadback = last && readReflection ? &reflectionImport_ : nullptr;
         req.dumpGraph = last && dumpGraph;
         FrameRecord rec = renderer_.record(cmd, slot, req);
         if (last) {
+            reflectionCopied = rec.reflectionCopied;
             result.cullLog = rec.cullLog;
             result.dot = rec.dot;
         }
@@ -113,8 +124,12 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
     vmaInvalidateAllocation(ctx_.allocator(), readback_.allocation, 0, VK_WHOLE_SIZE);
     result.image.width = extent.width;
     result.image.height = extent.height;
-    result.image.pixels.resize(readback_.size);
-    std::memcpy(result.image.pixels.data(), readback_.mapped, readback_.size);
+    result.image.pixels.resize(size_t(extent.width) * extent.height * 4);
+    std::memcpy(result.image.pixels.data(), readback_.mapped, size_t(extent.width) * extent.height * 4);
+    if (reflectionCopied) {
+        vmaInvalidateAllocation(ctx_.allocator(), reflectionReadback_.allocation, 0, VK_WHOLE_SIZE);
+        result.reflection = floatImageFromHalf(reflectionReadback_.mapped, extent.width, extent.height);
+    }
     for (auto& [name, values] : perPass) result.passMedianMs[name] = median(values);
     result.totalMedianMs = median(totals);
     return result;

@@ -1,6 +1,7 @@
 #pragma once
 // Headless rendering: records frames through the Renderer, submits them two in flight, reads the
 // final image back and collects per-pass GPU timestamps. Used by `ppr capture` and the GPU tests.
+#include "compare_metrics.hpp"
 #include "renderer.hpp"
 #include "util/image_io.hpp"
 
@@ -10,6 +11,7 @@ namespace ppr::app {
 
 struct CaptureResult {
     util::Rgba8Image image;
+    FloatImage reflection;                       // when requested and the technique has one (else 0x0)
     std::map<std::string, double> passMedianMs;  // per pass, median over the frames
     double totalMedianMs = 0.0;                  // median over frames of the per-frame sum
     uint32_t frames = 0;
@@ -26,8 +28,10 @@ public:
     HeadlessRenderer(const HeadlessRenderer&) = delete;
     HeadlessRenderer& operator=(const HeadlessRenderer&) = delete;
 
-    // Renders `frames` frames (≥ 1) of the camera at the extent; the last one is read back.
-    CaptureResult capture(const scene::CameraPose& camera, VkExtent2D extent, uint32_t frames, bool dumpGraph = false);
+    // Renders `frames` frames (≥ 1) of the camera at the extent; the last one is read back (and its
+    // reflection image too when `readReflection`).
+    CaptureResult capture(const scene::CameraPose& camera, VkExtent2D extent, uint32_t frames, bool dumpGraph = false,
+                          bool readReflection = false);
 
 private:
     void ensureTargets(VkExtent2D extent);
@@ -43,6 +47,8 @@ private:
     graph::ExternalImage targetImport_;
     vk::Buffer readback_;
     graph::ExternalBuffer readbackImport_;
+    vk::Buffer reflectionReadback_;  // RGBA16F
+    graph::ExternalBuffer reflectionImport_;
 };
 
 double median(std::vector<double> values);

@@ -1,5 +1,6 @@
 // ppr: pixel-projected reflections sample. See README.md and `ppr --help`.
 #include "capture.hpp"
+#include "compare.hpp"
 #include "cli.hpp"
 #include "viewer.hpp"
 
@@ -17,6 +18,7 @@ int main(int argc, char** argv) {
         }
         if (o.mode == Mode::Auto) o.mode = displayAvailable() ? Mode::View : Mode::Capture;
         if (o.mode == Mode::View) return runViewer(o);
+        if (o.mode == Mode::Compare) return runCompare(o);
         return runCapture(o);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "ppr: error: %s\n", e.what());

@@ -1,12 +1,18 @@
 #include "renderer.hpp"
 
 #include "common/frame.h"
+#include "ppr_clear/ppr_clear_pass.hpp"
+#include "ppr_common/encoding.h"
+#include "ppr_reflect/ppr_reflect.h"
 #include "readback/readback_pass.hpp"
+#include "scene/mirror.hpp"
+#include "techniques.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cstring>
+#include <stdexcept>
 
 namespace ppr::app {
 namespace {
@@ -17,6 +23,8 @@ uint32_t debugViewIndex(const std::string& name) {
     if (name == "roughness") return gpu::kDebugRoughness;
     if (name == "reflectors") return gpu::kDebugReflectors;
     if (name == "depth") return gpu::kDebugDepth;
+    if (name == "intermediate") return gpu::kDebugIntermediate;
+    if (name == "holes") return gpu::kDebugHoles;
     return gpu::kDebugNone;
 }
 
@@ -44,17 +52,24 @@ Renderer::Renderer(const vk::Context& ctx, const scene::Scene& scene) : ctx_(ctx
     composite_ = std::make_unique<passes::CompositePass>(ctx);
     tonemap_ = std::make_unique<passes::TonemapPass>(ctx);
     tonemap_->prepare(kCaptureFormat);
+    pprProject_ = std::make_unique<passes::PprProjectPass>(ctx);
+    pprReflect_ = std::make_unique<passes::PprReflectPass>(ctx);
+    planar_ = std::make_unique<passes::PlanarPass>(ctx, *gbuffer_, *lighting_);
+    reflectorBuffer_ = std::make_unique<passes::ReflectorBuffer>(ctx, kFramesInFlight);
     executor_ = std::make_unique<graph::GraphExecutor>(ctx, kFramesInFlight);
     const VkDeviceSize align = 256;  // ≥ minUniformBufferOffsetAlignment on every known device
     frameStride_ = (sizeof(gpu::FrameConstants) + align - 1) / align * align;
-    frameConstants_ = vk::createBuffer(ctx, frameStride_ * kFramesInFlight, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::Upload,
-                                       "frame constants");
+    setReflectors(scene.reflectors);
 }
 
 Renderer::~Renderer() {
     vkDeviceWaitIdle(ctx_.device());
     executor_.reset();
     vk::destroyBuffer(ctx_, frameConstants_);
+    reflectorBuffer_.reset();
+    planar_.reset();
+    pprReflect_.reset();
+    pprProject_.reset();
     tonemap_.reset();
     composite_.reset();
     lighting_.reset();
@@ -64,7 +79,39 @@ Renderer::~Renderer() {
     samplers_.destroy(ctx_);
 }
 
-void Renderer::writeFrameConstants(uint32_t slot, const FrameRequest& req) {
+void Renderer::setTechnique(const std::string& technique) {
+    if (!isTechnique(technique)) throw std::runtime_error("unknown technique '" + technique + "'");
+    technique_ = technique;
+}
+
+void Renderer::setReflectors(std::vector<scene::Reflector> reflectors) {
+    reflectorList_ = std::move(reflectors);
+    ++reflectorVersion_;
+    // Worst case every reflector is its own visible plane: size the per-frame views once per change.
+    ensureViewCapacity(1 + static_cast<uint32_t>(reflectorList_.size()));
+}
+
+void Renderer::ensureViewCapacity(uint32_t views) {
+    if (views <= viewCapacity_) return;
+    vkDeviceWaitIdle(ctx_.device());  // frames in flight read the old buffer; a reflector change is rare
+    vk::destroyBuffer(ctx_, frameConstants_);
+    frameConstants_ = vk::createBuffer(ctx_, frameStride_ * views * kFramesInFlight, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                       vk::MemoryUse::Upload, "frame constants");
+    viewCapacity_ = views;
+}
+
+passes::FrameInputs Renderer::frameInputs(uint32_t slot, uint32_t view, VkExtent2D extent) const {
+    passes::FrameInputs in;
+    in.frameConstants = frameConstants_.buffer;
+    in.frameConstantsOffset = (VkDeviceSize(slot) * viewCapacity_ + view) * frameStride_;
+    in.frameConstantsSize = sizeof(gpu::FrameConstants);
+    in.samplers = &samplers_;
+    in.scene = gpuScene_.get();
+    in.extent = extent;
+    return in;
+}
+
+gpu::FrameConstants Renderer::mainConstants(const FrameRequest& req) const {
     gpu::FrameConstants f{};
     const float aspect = static_cast<float>(req.extent.width) / static_cast<float>(req.extent.height);
     f.view = scene::viewMatrix(req.camera);
@@ -81,36 +128,99 @@ void Renderer::writeFrameConstants(uint32_t slot, const FrameRequest& req) {
     f.groundColor = glm::vec4(0.22f, 0.20f, 0.18f, 0.0f);
     f.screenSize = glm::vec2(req.extent.width, req.extent.height);
     f.invScreenSize = 1.0f / f.screenSize;
-    f.frameIndex = frameIndex_++;
+    f.frameIndex = frameIndex_;
     f.debugView = debugViewIndex(settings_.get("debug"));
-    std::memcpy(static_cast<char*>(frameConstants_.mapped) + slot * frameStride_, &f, sizeof(f));
-    vmaFlushAllocation(ctx_.allocator(), frameConstants_.allocation, slot * frameStride_, frameStride_);
+    return f;
+}
+
+Renderer::Views Renderer::writeFrameConstants(uint32_t slot, const FrameRequest& req) {
+    Views views;
+    const gpu::FrameConstants main = mainConstants(req);
+    ++frameIndex_;
+    auto write = [&](uint32_t view, const gpu::FrameConstants& f) {
+        const VkDeviceSize offset = (VkDeviceSize(slot) * viewCapacity_ + view) * frameStride_;
+        std::memcpy(static_cast<char*>(frameConstants_.mapped) + offset, &f, sizeof(f));
+    };
+    write(0, main);
+    if (technique_ == "planar") {
+        // One mirrored view per plane group with a visible reflector, in group order.
+        const scene::ReflectorGroups& groups = reflectorBuffer_->groups();
+        std::vector<int> representative(groups.planeGroupCount, -1);
+        for (size_t i = 0; i < reflectorList_.size(); ++i)
+            if (scene::reflectorMaybeVisible(reflectorList_[i], main.viewProj, req.camera.position) &&
+                representative[groups.planeGroup[i]] < 0)
+                representative[groups.planeGroup[i]] = static_cast<int>(i);
+        for (uint32_t group = 0; group < groups.planeGroupCount; ++group) {
+            if (representative[group] < 0) continue;
+            const scene::MirrorView mv = scene::mirrorView(main.view, main.proj, req.camera.position, reflectorList_[representative[group]]);
+            gpu::FrameConstants f = main;
+            f.view = mv.view;
+            f.proj = mv.proj;
+            f.viewProj = mv.proj * mv.view;
+            f.invViewProj = glm::inverse(f.viewProj);
+            f.cameraPos = glm::vec4(mv.eye, main.cameraPos.w);
+            f.debugView = gpu::kDebugNone;
+            f.mirrored = 1;
+            const uint32_t view = 1 + static_cast<uint32_t>(views.planar.size());
+            write(view, f);
+            views.planar.push_back({group, frameInputs(slot, view, req.extent)});
+        }
+    }
+    vmaFlushAllocation(ctx_.allocator(), frameConstants_.allocation, VkDeviceSize(slot) * viewCapacity_ * frameStride_,
+                       VkDeviceSize(viewCapacity_) * frameStride_);
+    return views;
+}
+
+std::optional<graph::ImageHandle> Renderer::addReflection(graph::RenderGraph& g, uint32_t slot, const passes::FrameInputs& in,
+                                                          const passes::GBuffer& gb, graph::ImageHandle lit, graph::ImageHandle shadowMap,
+                                                          const Views& views) {
+    if (technique_ == "ppr") {
+        const passes::ReflectorBinding binding{reflectorBuffer_->reflectors(slot), reflectorBuffer_->order(slot), reflectorBuffer_->count()};
+        graph::ImageHandle intermediate = passes::addPprClearPass(g, "ppr.intermediate", in.extent);
+        intermediate = pprProject_->add(g, in, gb.depth, binding, intermediate);
+        uint32_t flags = 0;
+        if (settings_.get("holes") == "1") flags |= gpu::kPprHoleFilling;
+        if (settings_.get("filter") == "1") flags |= gpu::kPprFiltering;
+        if (settings_.get("antibleed") == "1") flags |= gpu::kPprAntiBleeding;
+        return pprReflect_->add(g, in, intermediate, lit, gb.reflector, flags, debugViewIndex(settings_.get("debug")));
+    }
+    if (technique_ == "planar") return planar_->add(g, in, gb, shadowMap, views.planar, reflectorBuffer_->reflectors(slot));
+    return std::nullopt;
 }
 
 FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequest& req) {
-    writeFrameConstants(slot, req);
-    passes::FrameInputs in;
-    in.frameConstants = frameConstants_.buffer;
-    in.frameConstantsOffset = slot * frameStride_;
-    in.frameConstantsSize = sizeof(gpu::FrameConstants);
-    in.samplers = &samplers_;
-    in.scene = gpuScene_.get();
-    in.extent = req.extent;
+    FrameRecord rec;
+    const std::string requested = technique_;
+    if (technique_ == "ppr" && std::max(req.extent.width, req.extent.height) > gpu::kPprMaxExtent) {
+        // The intermediate encoding holds offsets up to 4095 px; larger frames render without PPR.
+        rec.warning = "PPR is limited to " + std::to_string(gpu::kPprMaxExtent) + " px per side (12-bit offsets); rendering without reflections";
+        technique_ = "none";
+    }
+    reflectorBuffer_->update(slot, reflectorList_, reflectorVersion_);
+    const Views views = writeFrameConstants(slot, req);
+    const passes::FrameInputs in = frameInputs(slot, 0, req.extent);
 
     graph::RenderGraph g;
     graph::ImageHandle shadowMap = shadow_->add(g, in, static_cast<uint32_t>(settings_.number("shadowres")));
     passes::GBuffer gb = gbuffer_->add(g, in);
     graph::ImageHandle lit = lighting_->add(g, in, gb, shadowMap);
-    graph::ImageHandle hdr = composite_->add(g, in, gb, lit);
+    std::optional<graph::ImageHandle> reflection = addReflection(g, slot, in, gb, lit, shadowMap, views);
+    std::optional<passes::CompositeReflection> blend;
+    if (reflection) blend = passes::CompositeReflection{*reflection, reflectorBuffer_->reflectors(slot)};
+    graph::ImageHandle hdr = composite_->add(g, in, gb, lit, blend);
     graph::ImageHandle target = req.target ? g.importImage("target", req.target)
                                            : g.createImage("final", {req.extent.width, req.extent.height, kCaptureFormat, 1});
     graph::ImageHandle output = tonemap_->add(g, in, hdr, target);
     if (req.overlay) output = req.overlay(g, output);
     if (req.readback) passes::addReadbackPass(g, "readback", output, g.importBuffer("readback", req.readback));
+    if (req.reflectionReadback && reflection) {
+        passes::addReadbackPass(g, "readback.reflection", *reflection, g.importBuffer("reflection readback", req.reflectionReadback));
+        rec.reflectionCopied = true;
+    }
 
     g.compile();
     executor_->execute(g, cmd, slot);
-    FrameRecord rec;
+    technique_ = requested;
     rec.cullLog = g.cullLog();
     if (req.dumpGraph) rec.dot = g.toDot();
     return rec;

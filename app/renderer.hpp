@@ -1,16 +1,23 @@
 #pragma once
-// Builds and records one frame: shadow → gbuffer → lighting → composite → tonemap → [ui] →
-// [readback], all through the render graph. Owns everything created once per run (pipelines,
+// Builds and records one frame: shadow → gbuffer → lighting → [reflection technique] → composite →
+// tonemap → [ui] → [readback], all through the render graph. Techniques: none, ppr (clear → project →
+// reflect), planar (mirrored re-render per plane, the ground truth). Owns everything created once per run (pipelines,
 // samplers, the GPU scene, the graph executor and its pool, per-frame constant buffers).
+#include "common/frame.h"
+#include "common/reflector_buffer.hpp"
 #include "composite/composite_pass.hpp"
 #include "gbuffer/gbuffer_pass.hpp"
 #include "graph/executor.hpp"
 #include "lighting/lighting_pass.hpp"
+#include "planar/planar_pass.hpp"
+#include "ppr_project/ppr_project_pass.hpp"
+#include "ppr_reflect/ppr_reflect_pass.hpp"
 #include "settings.hpp"
 #include "shadow/shadow_pass.hpp"
 #include "tonemap/tonemap_pass.hpp"
 
 #include <functional>
+#include <optional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,6 +29,9 @@ struct FrameRequest {
     VkExtent2D extent{};
     graph::ExternalImage* target = nullptr;      // tonemapped output (swapchain image) or null → transient
     graph::ExternalBuffer* readback = nullptr;   // when set, the final image is copied here (RGBA8)
+    // When set and the technique produces one, the reflection image is copied here (RGBA16F,
+    // common/reflection.h) — what `ppr compare` scores.
+    graph::ExternalBuffer* reflectionReadback = nullptr;
     // Extra passes drawn on top of the final image (the viewer's ImGui); returns the new version.
     std::function<graph::ImageHandle(graph::RenderGraph&, graph::ImageHandle)> overlay;
     bool dumpGraph = false;  // keep the Graphviz text of this frame's graph
@@ -30,7 +40,10 @@ struct FrameRequest {
 struct FrameRecord {
     std::string dot;      // when requested
     std::string cullLog;  // passes the graph culled, if any
+    std::string warning;  // e.g. a technique that could not run at this size (shown by the viewer)
+    bool reflectionCopied = false;
 };
+
 
 class Renderer {
 public:
@@ -42,6 +55,12 @@ public:
 
     Settings& settings() { return settings_; }
     const Settings& settings() const { return settings_; }
+    // Throws std::runtime_error for a name not in techniqueNames() (techniques.hpp).
+    void setTechnique(const std::string& technique);
+    const std::string& technique() const { return technique_; }
+    // The reflector set used from the next recorded frame on (uploaded once per change).
+    void setReflectors(std::vector<scene::Reflector> reflectors);
+    const std::vector<scene::Reflector>& reflectors() const { return reflectorList_; }
     void prepareTargetFormat(VkFormat format) { tonemap_->prepare(format); }
 
     // Records the frame for `slot` into cmd (the caller begins/ends/submits cmd).
@@ -53,7 +72,16 @@ public:
     graph::GraphExecutor& executor() { return *executor_; }  // the viewer trims the transient pool after resizes
 
 private:
-    void writeFrameConstants(uint32_t slot, const FrameRequest& request);
+    struct Views {  // main view + the planar technique's mirrored views of this frame
+        std::vector<passes::PlanarView> planar;
+    };
+    gpu::FrameConstants mainConstants(const FrameRequest& request) const;
+    void ensureViewCapacity(uint32_t views);
+    passes::FrameInputs frameInputs(uint32_t slot, uint32_t view, VkExtent2D extent) const;
+    Views writeFrameConstants(uint32_t slot, const FrameRequest& request);
+    std::optional<graph::ImageHandle> addReflection(graph::RenderGraph& g, uint32_t slot, const passes::FrameInputs& in,
+                                                    const passes::GBuffer& gb, graph::ImageHandle lit, graph::ImageHandle shadowMap,
+                                                    const Views& views);
     const vk::Context& ctx_;
     const scene::Scene& scene_;
     Settings settings_;
@@ -64,9 +92,17 @@ private:
     std::unique_ptr<passes::LightingPass> lighting_;
     std::unique_ptr<passes::CompositePass> composite_;
     std::unique_ptr<passes::TonemapPass> tonemap_;
+    std::unique_ptr<passes::PprProjectPass> pprProject_;
+    std::unique_ptr<passes::PprReflectPass> pprReflect_;
+    std::unique_ptr<passes::PlanarPass> planar_;
+    std::unique_ptr<passes::ReflectorBuffer> reflectorBuffer_;
     std::unique_ptr<graph::GraphExecutor> executor_;
-    vk::Buffer frameConstants_;
+    std::string technique_ = "none";
+    std::vector<scene::Reflector> reflectorList_;
+    uint64_t reflectorVersion_ = 0;
+    vk::Buffer frameConstants_;  // kFramesInFlight × viewCapacity_ FrameConstants, host-written
     VkDeviceSize frameStride_ = 0;
+    uint32_t viewCapacity_ = 0;
     uint32_t frameIndex_ = 0;
 };
 

@@ -1,9 +1,18 @@
 #include "report.hpp"
 
+#include "techniques.hpp"
+
 #include <fstream>
 #include <stdexcept>
 
 namespace ppr::app {
+
+double techniqueMs(const std::string& technique, const CaptureResult& r) {
+    double sum = 0.0;
+    for (const auto& [name, ms] : r.passMedianMs)
+        if (isTechniquePass(technique, name)) sum += ms;
+    return sum;
+}
 
 nlohmann::json makeReport(const vk::Context& ctx, const ReportInfo& info, const CaptureResult& r) {
     nlohmann::json j;
@@ -30,6 +39,8 @@ nlohmann::json makeReport(const vk::Context& ctx, const ReportInfo& info, const 
     j["passes"] = passes;
     j["pass_order"] = r.passOrder;
     j["total_gpu_ms"] = r.totalMedianMs;
+    j["technique_gpu_ms"] = techniqueMs(info.technique, r);
+    j["reflectors"] = info.reflectors;
     j["validation"] = info.validationEnabled;
     j["validation_errors"] = info.validationErrors;
     j["images"] = info.images;

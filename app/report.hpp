@@ -13,12 +13,15 @@ struct ReportInfo {
     scene::CameraPose pose;
     VkExtent2D size{};
     std::string technique;
+    size_t reflectors = 0;
     const Settings* settings = nullptr;
     uint32_t validationErrors = 0;
     bool validationEnabled = false;
     std::map<std::string, std::string> images;  // role → file
 };
 
+// Sum of the median GPU times of the technique's own passes (ppr.* / planar.*).
+double techniqueMs(const std::string& technique, const CaptureResult& result);
 nlohmann::json makeReport(const vk::Context& ctx, const ReportInfo& info, const CaptureResult& result);
 void writeJsonFile(const std::string& path, const nlohmann::json& j);
 

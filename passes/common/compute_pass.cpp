@@ -1,5 +1,6 @@
 #include "common/compute_pass.hpp"
 
+#include <algorithm>
 #include <utility>
 
 namespace ppr::passes {
@@ -17,6 +18,12 @@ ComputePass& ComputePass::uniform(VkBuffer buffer, VkDeviceSize offset, VkDevice
     bindings_.back().rawBuffer = buffer;
     bindings_.back().offset = offset;
     bindings_.back().range = range;
+    return *this;
+}
+
+ComputePass& ComputePass::hostStorage(VkBuffer buffer) {
+    bind(Kind::HostStorage, graph::Access::StorageRead, {}, {});
+    bindings_.back().rawBuffer = buffer;
     return *this;
 }
 
@@ -63,8 +70,19 @@ void ComputePass::add(VkExtent2D extent, uint32_t groupSize, std::optional<graph
     graph_.addPass<Data>(
         name_, graph::QueueKind::Compute,
         [&](graph::PassBuilder& b, Data& data) {
+            std::vector<std::pair<graph::ImageHandle, graph::ImageHandle>> sampledOnce;  // declared → returned
             for (Binding binding : bindings_) {
-                if (binding.kind == Kind::Sampled) binding.image = b.sampled(binding.image);
+                if (binding.kind == Kind::Sampled) {
+                    auto seen = std::find_if(sampledOnce.begin(), sampledOnce.end(), [&](const auto& p) {
+                        return p.first.id == binding.image.id && p.first.version == binding.image.version;
+                    });
+                    if (seen != sampledOnce.end()) binding.image = seen->second;
+                    else {
+                        graph::ImageHandle declared = b.sampled(binding.image);
+                        sampledOnce.emplace_back(binding.image, declared);
+                        binding.image = declared;
+                    }
+                }
                 else if (binding.kind == Kind::StorageImage) {
                     graph::ImageHandle h = binding.access == graph::Access::StorageRead    ? b.storageRead(binding.image)
                                            : binding.access == graph::Access::StorageWrite ? b.storageWrite(binding.image)
@@ -90,6 +108,7 @@ void ComputePass::add(VkExtent2D extent, uint32_t groupSize, std::optional<graph
             for (const Binding& b : data.bindings) {
                 switch (b.kind) {
                     case Kind::Uniform: writes.uniformBuffer(b.rawBuffer, b.offset, b.range); break;
+                    case Kind::HostStorage: writes.storageBuffer(b.rawBuffer); break;
                     case Kind::Sampled: writes.sampled(pc.view(b.image), pc.layout(b.image), b.sampler); break;
                     case Kind::StorageImage: writes.storageImage(pc.view(b.image)); break;
                     case Kind::StorageBuffer: writes.storageBuffer(pc.buffer(b.buffer)); break;

@@ -25,6 +25,8 @@ public:
         : graph_(g), ctx_(ctx), name_(std::move(name)), pipeline_(pipeline) {}
 
     ComputePass& uniform(VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range);  // outside the graph
+    ComputePass& hostStorage(VkBuffer buffer);  // a host-written storage buffer outside the graph (scene data)
+    // The same image may be sampled twice with different samplers (declared to the graph once).
     ComputePass& sampled(graph::ImageHandle image, VkSampler sampler);
     ComputePass& storageRead(graph::ImageHandle image);
     ComputePass& storageWrite(graph::ImageHandle image, graph::ImageHandle* written);
@@ -42,7 +44,7 @@ public:
     void dispatchIndirect(graph::BufferHandle args, VkDeviceSize offset = 0);
 
 private:
-    enum class Kind { Uniform, Sampled, StorageImage, StorageBuffer };
+    enum class Kind { Uniform, HostStorage, Sampled, StorageImage, StorageBuffer };
     struct Binding {
         Kind kind;
         graph::Access access = graph::Access::Sampled;

@@ -19,7 +19,7 @@ struct FrameConstants {
     vec2 invScreenSize;
     uint frameIndex;
     uint debugView;         // DebugView value (composite)
-    uint pad0;
+    uint mirrored;          // 1 in a mirrored view: the reflection flips triangle winding
     uint pad1;
 };
 PPR_END
@@ -33,5 +33,7 @@ PPR_CONST(uint, kDebugRoughness, 3u)
 PPR_CONST(uint, kDebugReflectors, 4u)
 PPR_CONST(uint, kDebugDepth, 5u)
 PPR_CONST(uint, kDebugShadow, 6u)
+PPR_CONST(uint, kDebugIntermediate, 7u)  // PPR: the decoded intermediate buffer
+PPR_CONST(uint, kDebugHoles, 8u)         // PPR: own data / hole-filled / no data per reflector pixel
 
 #endif

@@ -9,5 +9,9 @@ PPR_CONST(float, kReflectionNone, 0.0f)       // no reflection (not a reflector 
 PPR_CONST(float, kReflectionHit, 1.0f)        // a reflection; for `planar`: the reflected point is visible in the main view
 PPR_CONST(float, kReflectionFilled, 0.75f)    // PPR: taken from a neighbour by hole filling
 PPR_CONST(float, kReflectionOffscreen, 0.5f)  // planar: reflected point off screen, occluded in the main view, or sky
+// planar: the reflected point lies on another reflector. Its lit colour is a stand-in for a second
+// bounce and depends on the viewpoint (a mirror seen from the mirrored camera shows another part of
+// the sky), which no single-bounce screen-space technique can reproduce; not scored.
+PPR_CONST(float, kReflectionSecondary, 0.25f)
 
 #endif

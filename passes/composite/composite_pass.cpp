@@ -3,6 +3,7 @@
 #include "common/compute_pass.hpp"
 
 #include "composite_comp.h"
+#include "composite_reflect_comp.h"
 #include "lighting/lighting.h"
 #include "lighting/lighting_pass.hpp"
 
@@ -13,22 +14,27 @@ CompositePass::CompositePass(const vk::Context& ctx) : ctx_(ctx) {
     layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER};
     for (int i = 0; i < 6; ++i) layout.pushBindings.push_back(VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
     layout.pushBindings.push_back(VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);
-    pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(composite_comp), layout, "composite");
+    plain_ = shader::createComputePipeline(ctx, PPR_SPIRV(composite_comp), layout, "composite");
+    layout.pushBindings.push_back(VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
+    layout.pushBindings.push_back(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+    withReflection_ = shader::createComputePipeline(ctx, PPR_SPIRV(composite_reflect_comp), layout, "composite (reflection)");
 }
 
-graph::ImageHandle CompositePass::add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::ImageHandle sceneColor) const {
+graph::ImageHandle CompositePass::add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::ImageHandle sceneColor,
+                                      const std::optional<CompositeReflection>& reflection) const {
     const VkSampler s = in.samplers->nearestClamp;
     graph::ImageHandle out;
-    ComputePass(g, ctx_, "composite", pipeline_)
-        .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
+    ComputePass pass(g, ctx_, "composite", reflection ? withReflection_ : plain_);
+    pass.uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
         .sampled(sceneColor, s)
         .sampled(gb.depth, s)
         .sampled(gb.normal, s)
         .sampled(gb.albedo, s)
         .sampled(gb.material, s)
         .sampled(gb.reflector, s)
-        .storageWrite(g.createImage("composited", {in.extent.width, in.extent.height, LightingPass::kColorFormat, 1}), &out)
-        .dispatch(in.extent, gpu::kLightingGroupSize);
+        .storageWrite(g.createImage("composited", {in.extent.width, in.extent.height, LightingPass::kColorFormat, 1}), &out);
+    if (reflection) pass.sampled(reflection->image, s).hostStorage(reflection->reflectors);
+    pass.dispatch(in.extent, gpu::kLightingGroupSize);
     return out;
 }
 

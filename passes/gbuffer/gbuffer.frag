@@ -28,8 +28,10 @@ void main() {
     vec4 base = m.baseColor * sampleOr(m.baseColorTex, vec4(1.0));
     vec4 mr = sampleOr(m.metalRoughTex, vec4(1.0));
 
-    // Two-sided: flip the geometric frame for back faces so thin panels light correctly.
-    vec3 n = normalize(gl_FrontFacing ? vNormal : -vNormal);
+    // Two-sided: flip the geometric frame for back faces so thin panels light correctly. A mirrored
+    // view (planar reference) reverses winding, so there the back-facing side is the front.
+    bool front = gl_FrontFacing != (frame.mirrored != 0u);
+    vec3 n = normalize(front ? vNormal : -vNormal);
     if (m.normalTex != kNoTexture) {
         vec3 t = vTangent.xyz - n * dot(n, vTangent.xyz);
         if (dot(t, t) > 1e-12) {

@@ -22,16 +22,21 @@ GBufferPass::GBufferPass(const vk::Context& ctx, const gpu::GpuScene& scene) : c
                     .build();
 }
 
-GBuffer GBufferPass::add(graph::RenderGraph& g, const FrameInputs& in) const {
-    const uint32_t w = in.extent.width, h = in.extent.height;
+GBuffer GBufferPass::createTargets(graph::RenderGraph& g, const std::string& name, VkExtent2D extent) {
+    const uint32_t w = extent.width, h = extent.height;
     GBuffer out;
-    out.depth = g.createImage("gbuffer.depth", {w, h, kDepthFormat, 1});
-    out.normal = g.createImage("gbuffer.normal", {w, h, kNormalFormat, 1});
-    out.albedo = g.createImage("gbuffer.albedo", {w, h, kAlbedoFormat, 1});
-    out.material = g.createImage("gbuffer.material", {w, h, kMaterialFormat, 1});
-    out.reflector = g.createImage("gbuffer.reflector", {w, h, kReflectorFormat, 1});
+    out.depth = g.createImage(name + ".depth", {w, h, kDepthFormat, 1});
+    out.normal = g.createImage(name + ".normal", {w, h, kNormalFormat, 1});
+    out.albedo = g.createImage(name + ".albedo", {w, h, kAlbedoFormat, 1});
+    out.material = g.createImage(name + ".material", {w, h, kMaterialFormat, 1});
+    out.reflector = g.createImage(name + ".reflector", {w, h, kReflectorFormat, 1});
+    return out;
+}
+
+GBuffer GBufferPass::add(graph::RenderGraph& g, const FrameInputs& in, const std::string& name, const GBuffer* targets) const {
+    const GBuffer out = targets ? *targets : createTargets(g, name, in.extent);
     const GBuffer& d = g.addPass<GBuffer>(
-        "gbuffer", graph::QueueKind::Graphics,
+        name, graph::QueueKind::Graphics,
         [&](graph::PassBuilder& b, GBuffer& data) {
             data.normal = b.colorAttachment(out.normal, graph::LoadOp::Clear, {{0.0f, 0.0f, 0.0f, 0.0f}});
             data.albedo = b.colorAttachment(out.albedo, graph::LoadOp::Clear, {{0.0f, 0.0f, 0.0f, 0.0f}});

@@ -18,7 +18,11 @@ public:
     static constexpr VkFormat kReflectorFormat = VK_FORMAT_R16_UINT;
 
     GBufferPass(const vk::Context& ctx, const gpu::GpuScene& scene);
-    GBuffer add(graph::RenderGraph& g, const FrameInputs& in) const;
+    // `targets`: existing images to draw into (new versions), e.g. the planar reference reusing one
+    // G-buffer for every mirrored view; null = new transient images named "<name>.depth" etc.
+    GBuffer add(graph::RenderGraph& g, const FrameInputs& in, const std::string& name = "gbuffer", const GBuffer* targets = nullptr) const;
+    // New transient G-buffer images named "<name>.depth", "<name>.normal", ...
+    static GBuffer createTargets(graph::RenderGraph& g, const std::string& name, VkExtent2D extent);
 
 private:
     const vk::Context& ctx_;

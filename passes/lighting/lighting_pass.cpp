@@ -16,17 +16,19 @@ LightingPass::LightingPass(const vk::Context& ctx) : ctx_(ctx) {
     pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(lighting_comp), layout, "lighting");
 }
 
-graph::ImageHandle LightingPass::add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::ImageHandle shadowMap) const {
+graph::ImageHandle LightingPass::add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::ImageHandle shadowMap,
+                                     const std::string& name, graph::ImageHandle target) const {
     const shader::Samplers& s = *in.samplers;
+    if (!target.valid()) target = g.createImage("sceneColor", {in.extent.width, in.extent.height, kColorFormat, 1});
     graph::ImageHandle out;
-    ComputePass(g, ctx_, "lighting", pipeline_)
+    ComputePass(g, ctx_, name, pipeline_)
         .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
         .sampled(gb.depth, s.nearestClamp)
         .sampled(gb.normal, s.nearestClamp)
         .sampled(gb.albedo, s.nearestClamp)
         .sampled(gb.material, s.nearestClamp)
         .sampled(shadowMap, s.shadowCompare)
-        .storageWrite(g.createImage("sceneColor", {in.extent.width, in.extent.height, kColorFormat, 1}), &out)
+        .storageWrite(target, &out)
         .dispatch(in.extent, gpu::kLightingGroupSize);
     return out;
 }

@@ -1,0 +1,139 @@
+#include "compare.hpp"
+
+#include "common/reflection.h"
+#include "contact_sheet.hpp"
+#include "headless.hpp"
+#include "report.hpp"
+#include "scene_source.hpp"
+
+#include <cstdio>
+#include <filesystem>
+
+namespace ppr::app {
+namespace {
+
+// White where the reference scores pixels, grey where a reflector's reflected point is off screen or
+// occluded, the reference's final image dimmed elsewhere.
+util::Rgba8Image scoredPixelsImage(const FloatImage& reference, const util::Rgba8Image& context) {
+    util::Rgba8Image out = context;
+    for (size_t i = 0; i < size_t(reference.width) * reference.height; ++i) {
+        const float a = reference.rgba[i * 4 + 3];
+        uint8_t* p = &out.pixels[i * 4];
+        if (a == gpu::kReflectionHit) p[0] = p[1] = p[2] = 255;
+        else if (a > 0.0f) p[0] = p[1] = p[2] = 96;
+        else for (int c = 0; c < 3; ++c) p[c] = static_cast<uint8_t>(p[c] / 4);
+    }
+    return out;
+}
+
+FloatImage emptyReflection(VkExtent2D extent) {  // technique `none`: no reflection anywhere
+    FloatImage f;
+    f.width = extent.width;
+    f.height = extent.height;
+    f.rgba.assign(size_t(extent.width) * extent.height * 4, 0.0f);
+    return f;
+}
+
+std::string fixed(double v, int digits) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+    return buf;
+}
+
+}  // namespace
+
+int runCompare(const Options& o) {
+    const scene::Scene scene = loadScene(o);
+    const std::vector<ResolvedCamera> cameras = resolveCameras(scene, o.camera);
+    vk::ContextOptions co;
+    co.validation = o.validation;
+    auto ctx = vk::Context::create(co);
+    std::printf("ppr: %s (%s, Vulkan %s)%s\n", ctx->info().name.c_str(), ctx->info().type.c_str(), ctx->info().apiVersionString.c_str(),
+                ctx->validationEnabled() ? ", validation + synchronization validation on" : "");
+    Renderer renderer(*ctx, scene);
+    for (const std::string& kv : o.sets) renderer.settings().apply(kv);
+    HeadlessRenderer headless(*ctx, renderer);
+    const VkExtent2D extent{o.width, o.height};
+    const uint32_t frames = o.frames ? o.frames : 5;
+    const float exposure = static_cast<float>(renderer.settings().number("exposure"));
+
+    const bool single = cameras.size() == 1;
+    nlohmann::json summary;
+    summary["device"] = ctx->info().name;
+    summary["size"] = {extent.width, extent.height};
+    summary["techniques"] = o.techniques;
+    summary["cameras"] = nlohmann::json::object();
+    for (const ResolvedCamera& cam : cameras) {
+        const std::filesystem::path dir = single ? std::filesystem::path(o.out) : std::filesystem::path(o.out) / cam.name;
+        std::filesystem::create_directories(dir);
+        const uint32_t errorsBefore = ctx->validationErrors();
+
+        renderer.setTechnique("planar");
+        const CaptureResult ref = headless.capture(cam.pose, extent, frames, false, true);
+        util::writePng((dir / "final_planar.png").string(), ref.image);
+        util::writePng((dir / "reflection_planar.png").string(), reflectionDisplayImage(ref.reflection, exposure));
+
+        nlohmann::json metrics;
+        metrics["camera"] = cam.name;
+        metrics["size"] = {extent.width, extent.height};
+        metrics["device"] = ctx->info().name;
+        metrics["settings"] = renderer.settings().all();
+        metrics["frames"] = frames;
+        metrics["reference"] = {{"technique", "planar"},
+                                {"gpu_ms", techniqueMs("planar", ref)},
+                                {"frame_gpu_ms", ref.totalMedianMs},
+                                {"images", {{"final", "final_planar.png"}, {"reflection", "reflection_planar.png"}}}};
+        metrics["techniques"] = nlohmann::json::object();
+        std::vector<ContactTile> finals, reflections, errors;
+        for (const std::string& t : o.techniques) {
+            renderer.setTechnique(t);
+            const CaptureResult r = headless.capture(cam.pose, extent, frames, false, true);
+            const FloatImage reflection = r.reflection.rgba.empty() ? emptyReflection(extent) : r.reflection;
+            const ReflectionScore s = scoreReflection(reflection, ref.reflection, exposure);
+            const double ms = techniqueMs(t, r);
+            const std::string finalFile = "final_" + t + ".png", reflFile = "reflection_" + t + ".png", errFile = "error_" + t + ".png";
+            const util::Rgba8Image heat = errorHeatMap(reflection, ref.reflection, exposure, r.image);
+            util::writePng((dir / finalFile).string(), r.image);
+            util::writePng((dir / reflFile).string(), reflectionDisplayImage(reflection, exposure));
+            util::writePng((dir / errFile).string(), heat);
+            metrics["techniques"][t] = {{"psnr_db", s.psnrDb},
+                                        {"coverage", s.coverage},
+                                        {"gpu_ms", ms},
+                                        {"frame_gpu_ms", r.totalMedianMs},
+                                        {"mse", s.mse},
+                                        {"scored_pixels", s.maskPixels},
+                                        {"covered_pixels", s.coveredPixels},
+                                        {"images", {{"final", finalFile}, {"reflection", reflFile}, {"error", errFile}}}};
+            summary["cameras"][cam.name][t] = {{"psnr_db", s.psnrDb}, {"coverage", s.coverage}, {"gpu_ms", ms}};
+            finals.push_back({t + " (final)", r.image});
+            reflections.push_back({t + " reflection: " + fixed(s.psnrDb, 1) + " dB, coverage " + fixed(s.coverage, 3), reflectionDisplayImage(reflection, exposure)});
+            errors.push_back({t + " error (white = 0.25)", heat});
+            std::printf("ppr: %-8s %-7s PSNR %6.2f dB  coverage %.4f  %8.2f ms GPU (technique passes)\n", cam.name.c_str(), t.c_str(),
+                        s.psnrDb, s.coverage, ms);
+        }
+        finals.push_back({"planar reference (final)", ref.image});
+        reflections.push_back({"planar reference reflection", reflectionDisplayImage(ref.reflection, exposure)});
+        errors.push_back({"scored pixels (white)", scoredPixelsImage(ref.reflection, ref.image)});
+        std::vector<ContactTile> tiles = finals;
+        tiles.insert(tiles.end(), reflections.begin(), reflections.end());
+        tiles.insert(tiles.end(), errors.begin(), errors.end());
+        util::writePng((dir / "contact.png").string(), makeContactSheet(tiles, static_cast<uint32_t>(finals.size())));
+        metrics["images"] = {{"contact", "contact.png"}};
+        metrics["validation"] = ctx->validationEnabled();
+        metrics["validation_errors"] = ctx->validationErrors() - errorsBefore;
+        writeJsonFile((dir / "metrics.json").string(), metrics);
+        std::printf("ppr: %-8s -> %s\n", cam.name.c_str(), (dir / "contact.png").c_str());
+    }
+    if (!single) {
+        summary["validation_errors"] = ctx->validationErrors();
+        writeJsonFile((std::filesystem::path(o.out) / "metrics.json").string(), summary);
+    }
+    if (ctx->validationErrors() > 0) {
+        std::fprintf(stderr, "ppr: %u validation error(s)\n", ctx->validationErrors());
+        return 1;
+    }
+    std::printf("ppr: wrote %s\n", std::filesystem::absolute(o.out).c_str());
+    return 0;
+}
+
+}  // namespace ppr::app

@@ -1,0 +1,44 @@
+#pragma once
+// The reflectors on the GPU: one host-visible copy per frame in flight, rewritten only when the
+// reflector set changes (a version number), never per frame. A slot's copy is rewritten just before
+// that slot records, after its fence, so no frame in flight ever sees a half-written buffer.
+#include "common/reflector_data.h"
+#include "scene/reflector.hpp"
+#include "scene/reflector_groups.hpp"
+#include "vk/context.hpp"
+
+#include <vector>
+
+namespace ppr::passes {
+
+class ReflectorBuffer {
+public:
+    ReflectorBuffer(const vk::Context& ctx, uint32_t framesInFlight);
+    ~ReflectorBuffer();
+    ReflectorBuffer(const ReflectorBuffer&) = delete;
+    ReflectorBuffer& operator=(const ReflectorBuffer&) = delete;
+
+    // Makes `slot`'s copy hold `reflectors` (a no-op when `version` is what the slot already holds).
+    void update(uint32_t slot, const std::vector<scene::Reflector>& reflectors, uint64_t version);
+
+    VkBuffer reflectors(uint32_t slot) const { return slots_[slot].reflectors.buffer; }  // ReflectorData[]
+    VkBuffer order(uint32_t slot) const { return slots_[slot].order.buffer; }            // uint[] projection order
+    uint32_t count() const { return count_; }
+    const scene::ReflectorGroups& groups() const { return groups_; }
+
+    static std::vector<gpu::ReflectorData> pack(const std::vector<scene::Reflector>& reflectors, const scene::ReflectorGroups& groups);
+
+private:
+    struct Slot {
+        vk::Buffer reflectors, order;
+        uint64_t version = ~0ull;
+        uint32_t capacity = 0;
+    };
+    const vk::Context& ctx_;
+    std::vector<Slot> slots_;
+    scene::ReflectorGroups groups_;
+    uint64_t groupsVersion_ = ~0ull;
+    uint32_t count_ = 0;
+};
+
+}  // namespace ppr::passes

@@ -1,0 +1,64 @@
+// Composite body, compiled twice: composite.comp (no reflection technique) and
+// composite_reflect.comp (PPR_COMPOSITE_REFLECTION: blends the technique's reflection image).
+#include "common/bindings.glsl"
+#include "common/brdf.glsl"
+#include "common/reflection.h"
+#include "common/reflector_data.h"
+#include "lighting/lighting.h"
+
+layout(local_size_x = kLightingGroupSize, local_size_y = kLightingGroupSize) in;
+layout(set = 0, binding = 1) uniform sampler2D sceneColor;
+layout(set = 0, binding = 2) uniform sampler2D depthTex;
+layout(set = 0, binding = 3) uniform sampler2D normalTex;
+layout(set = 0, binding = 4) uniform sampler2D albedoTex;
+layout(set = 0, binding = 5) uniform sampler2D materialTex;
+layout(set = 0, binding = 6) uniform usampler2D reflectorTex;
+layout(set = 0, binding = 7, rgba16f) uniform writeonly image2D outColor;
+#ifdef PPR_COMPOSITE_REFLECTION
+layout(set = 0, binding = 8) uniform sampler2D reflectionTex;
+layout(set = 0, binding = 9, scalar) readonly buffer Reflectors { ReflectorData reflectors[]; };
+#endif
+
+vec3 idColor(uint id) {
+    uint h = id * 2654435761u;
+    return vec3((h >> 8) & 255u, (h >> 16) & 255u, (h >> 24) & 255u) / 255.0;
+}
+
+void main() {
+    ivec2 pix = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(pix, ivec2(frame.screenSize)))) return;
+    vec3 c = texelFetch(sceneColor, pix, 0).rgb;
+    uint id = texelFetch(reflectorTex, pix, 0).r;
+#ifdef PPR_COMPOSITE_REFLECTION
+    vec4 reflection = texelFetch(reflectionTex, pix, 0);
+    if (id != 0u && reflection.a > 0.0) {
+        // The reflection replaces the lit surface by the Fresnel term (Schlick, F0 from the material)
+        // times the reflector's reflectance.
+        float depth = texelFetch(depthTex, pix, 0).r;
+        vec3 world = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depth);
+        vec3 n = normalize(texelFetch(normalTex, pix, 0).xyz);
+        vec3 albedo = texelFetch(albedoTex, pix, 0).rgb;
+        float metallic = texelFetch(materialTex, pix, 0).g;
+        float nv = max(dot(n, normalize(frame.cameraPos.xyz - world)), 0.0);
+        vec3 weight = fresnelSchlick(nv, mix(vec3(0.04), albedo, metallic)) * reflectors[id - 1u].reflectance;
+        c = mix(c, reflection.rgb, weight);
+    }
+#endif
+    uint view = frame.debugView;
+    if (view == kDebugAlbedo) c = texelFetch(albedoTex, pix, 0).rgb;
+    else if (view == kDebugNormals) c = texelFetch(normalTex, pix, 0).xyz * 0.5 + 0.5;
+    else if (view == kDebugRoughness) c = texelFetch(materialTex, pix, 0).rgb;
+    else if (view == kDebugDepth) c = vec3(pow(texelFetch(depthTex, pix, 0).r, 0.25));
+    else if (view == kDebugReflectors) {
+        if (id != 0u) c = mix(c, idColor(id), 0.6);
+    }
+#ifdef PPR_COMPOSITE_REFLECTION
+    else if (view == kDebugIntermediate || view == kDebugHoles) {
+        // Drawn by the PPR reflection pass (alpha marks what it drew); the scene is dimmed around it.
+        c = mix(c * 0.25 * frame.lightColor.w, reflection.rgb, reflection.a);
+    }
+#endif
+    // Debug views are shown without tonemapping curves distorting them too much: divide by exposure.
+    if (view != kDebugNone && view != kDebugReflectors) c /= max(frame.lightColor.w, 1e-4);
+    imageStore(outColor, pix, vec4(c, 1.0));
+}

@@ -1,0 +1,33 @@
+#pragma once
+// Technique `planar`, the ground truth: for each visible plane group, the scene re-rendered (G-buffer
+// + lighting) by the camera mirrored about the plane with an oblique near plane at it
+// (engine/scene/mirror.hpp), then resolved onto the group's reflector pixels. Exact for mirrors;
+// costs a full scene render per plane, which is why it is the reference and not a technique to ship.
+#include "common/frame_inputs.hpp"
+#include "gbuffer/gbuffer_pass.hpp"
+#include "lighting/lighting_pass.hpp"
+
+#include <vector>
+
+namespace ppr::passes {
+
+struct PlanarView {
+    uint32_t planeGroup = 0;
+    FrameInputs in;  // the mirrored view's frame constants
+};
+
+class PlanarPass {
+public:
+    PlanarPass(const vk::Context& ctx, const GBufferPass& gbuffer, const LightingPass& lighting);
+    // Returns the reflection image (common/reflection.h); views may be empty (nothing visible).
+    graph::ImageHandle add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::ImageHandle shadowMap,
+                           const std::vector<PlanarView>& views, VkBuffer reflectors) const;
+
+private:
+    const vk::Context& ctx_;
+    const GBufferPass& gbuffer_;
+    const LightingPass& lighting_;
+    shader::Pipeline resolve_;
+};
+
+}  // namespace ppr::passes

@@ -1,0 +1,22 @@
+// PPR projection pass constants (host/device shared).
+#ifndef PPR_PROJECT_H
+#define PPR_PROJECT_H
+#include "shader/shared.h"
+
+PPR_CONST(uint, kPprProjectGroupSize, 8u)
+// A pixel counts as above a reflector's plane only beyond this (metres, plus a fraction of its
+// distance to the camera for depth-reconstruction error), so the reflector surface never reflects itself.
+PPR_CONST(float, kPprAboveEpsilon, 1e-3f)
+PPR_CONST(float, kPprAboveEpsilonPerMetre, 1e-4f)
+
+PPR_BEGIN
+struct PprProjectPush {
+    uint reflectorCount;
+    uint pad0;
+    uint pad1;
+    uint pad2;
+};
+PPR_END
+PPR_SIZE_CHECK(PprProjectPush, 16);
+
+#endif
