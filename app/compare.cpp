@@ -82,7 +82,7 @@ int runCompare(const Options& o) {
         metrics["reference"] = {{"technique", "planar"},
                                 {"gpu_ms", techniqueMs("planar", ref)},
                                 {"frame_gpu_ms", ref.totalMedianMs},
-                                {"images", {{"final", "final_planar.png"}, {"reflection", "reflection_planar.png"}}}};
+                                {"images", {{"final", "final_planar.png"}, {"reflection", "reflection_planar.png"}, {"scored_pixels", "scored_pixels.png"}}}};
         metrics["techniques"] = nlohmann::json::object();
         std::vector<ContactTile> finals, reflections, errors;
         for (const std::string& t : o.techniques) {
@@ -90,30 +90,36 @@ int runCompare(const Options& o) {
             const CaptureResult r = headless.capture(cam.pose, extent, frames, false, true);
             const FloatImage reflection = r.reflection.rgba.empty() ? emptyReflection(extent) : r.reflection;
             const ReflectionScore s = scoreReflection(reflection, ref.reflection, exposure);
+            const double psnr = compositedPsnrDb(r.image, ref.image, ref.reflection);
             const double ms = techniqueMs(t, r);
             const std::string finalFile = "final_" + t + ".png", reflFile = "reflection_" + t + ".png", errFile = "error_" + t + ".png";
             const util::Rgba8Image heat = errorHeatMap(reflection, ref.reflection, exposure, r.image);
             util::writePng((dir / finalFile).string(), r.image);
             util::writePng((dir / reflFile).string(), reflectionDisplayImage(reflection, exposure));
             util::writePng((dir / errFile).string(), heat);
-            metrics["techniques"][t] = {{"psnr_db", s.psnrDb},
+            metrics["techniques"][t] = {{"psnr_db", psnr},
+                                        {"psnr_reflection_db", s.psnrDb},
                                         {"coverage", s.coverage},
                                         {"gpu_ms", ms},
                                         {"frame_gpu_ms", r.totalMedianMs},
-                                        {"mse", s.mse},
+                                        {"mse_reflection", s.mse},
                                         {"scored_pixels", s.maskPixels},
                                         {"covered_pixels", s.coveredPixels},
                                         {"images", {{"final", finalFile}, {"reflection", reflFile}, {"error", errFile}}}};
-            summary["cameras"][cam.name][t] = {{"psnr_db", s.psnrDb}, {"coverage", s.coverage}, {"gpu_ms", ms}};
+            summary["cameras"][cam.name][t] = {{"psnr_db", psnr}, {"psnr_reflection_db", s.psnrDb}, {"coverage", s.coverage}, {"gpu_ms", ms}};
             finals.push_back({t + " (final)", r.image});
-            reflections.push_back({t + " reflection: " + fixed(s.psnrDb, 1) + " dB, coverage " + fixed(s.coverage, 3), reflectionDisplayImage(reflection, exposure)});
+            finals.back().label = t + ": " + fixed(psnr, 1) + " dB as composited";
+            reflections.push_back({t + " reflection: " + fixed(s.psnrDb, 1) + " dB, coverage " + fixed(s.coverage, 3),
+                                   reflectionDisplayImage(reflection, exposure)});
             errors.push_back({t + " error (white = 0.25)", heat});
-            std::printf("ppr: %-8s %-7s PSNR %6.2f dB  coverage %.4f  %8.2f ms GPU (technique passes)\n", cam.name.c_str(), t.c_str(),
-                        s.psnrDb, s.coverage, ms);
+            std::printf("ppr: %-8s %-7s PSNR %6.2f dB (reflection alone %6.2f dB)  coverage %.4f  %8.2f ms GPU (technique passes)\n",
+                        cam.name.c_str(), t.c_str(), psnr, s.psnrDb, s.coverage, ms);
         }
         finals.push_back({"planar reference (final)", ref.image});
         reflections.push_back({"planar reference reflection", reflectionDisplayImage(ref.reflection, exposure)});
-        errors.push_back({"scored pixels (white)", scoredPixelsImage(ref.reflection, ref.image)});
+        const util::Rgba8Image scored = scoredPixelsImage(ref.reflection, ref.image);
+        util::writePng((dir / "scored_pixels.png").string(), scored);
+        errors.push_back({"scored pixels (white)", scored});
         std::vector<ContactTile> tiles = finals;
         tiles.insert(tiles.end(), reflections.begin(), reflections.end());
         tiles.insert(tiles.end(), errors.begin(), errors.end());

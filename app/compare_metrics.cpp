@@ -108,6 +108,32 @@ ReflectionScore scoreReflection(const FloatImage& technique, const FloatImage& r
     return scoreReflection(technique, reference, exposure, PixelRect{0, 0, reference.width, reference.height});
 }
 
+double compositedPsnrDb(const util::Rgba8Image& technique, const util::Rgba8Image& reference, const FloatImage& referenceReflection,
+                        const PixelRect* region) {
+    checkImage(referenceReflection, "reference reflection");
+    const uint32_t w = referenceReflection.width, h = referenceReflection.height;
+    for (const util::Rgba8Image* img : {&technique, &reference})
+        if (img->width != w || img->height != h || img->pixels.size() != size_t(w) * h * 4)
+            throw std::invalid_argument("compositedPsnrDb: final images must be " + std::to_string(w) + "x" + std::to_string(h));
+    const PixelRect r = region ? *region : PixelRect{0, 0, w, h};
+    if (uint64_t(r.x) + r.width > w || uint64_t(r.y) + r.height > h) throw std::invalid_argument("compositedPsnrDb: region outside the image");
+    double sumSq = 0.0;
+    uint64_t n = 0;
+    for (uint32_t y = r.y; y < r.y + r.height; ++y)
+        for (uint32_t x = r.x; x < r.x + r.width; ++x) {
+            const size_t i = size_t(y) * w + x;
+            if (alphaAt(referenceReflection, i) != gpu::kReflectionHit) continue;
+            ++n;
+            for (int c = 0; c < 3; ++c) {
+                const double d = (double(technique.pixels[i * 4 + c]) - double(reference.pixels[i * 4 + c])) / 255.0;
+                sumSq += d * d;
+            }
+        }
+    if (n == 0) return kPsnrCapDb;
+    const double mse = sumSq / (3.0 * double(n));
+    return mse > 0.0 ? std::min(kPsnrCapDb, 10.0 * std::log10(1.0 / mse)) : kPsnrCapDb;
+}
+
 util::Rgba8Image reflectionDisplayImage(const FloatImage& reflection, float exposure) {
     checkImage(reflection, "reflection");
     util::Rgba8Image out;

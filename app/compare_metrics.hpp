@@ -51,6 +51,13 @@ struct PixelRect {
 ReflectionScore scoreReflection(const FloatImage& technique, const FloatImage& reference, float exposure,
                                 const PixelRect& region);
 
+// PSNR of the reflection term as composited: the displayed final images (8-bit, identical lit scene)
+// compared over the same mask, taken from `referenceReflection`. Outside reflections the two finals
+// are the same picture, so every difference here is Fresnel × reflectance × the reflection error,
+// tonemapped. Optional region as above. Same cap and empty-mask rules as scoreReflection.
+double compositedPsnrDb(const util::Rgba8Image& technique, const util::Rgba8Image& reference, const FloatImage& referenceReflection,
+                        const PixelRect* region = nullptr);
+
 // The reflection term as the user sees it: displayFromRadiance(rgb) where alpha > 0, black elsewhere;
 // 8-bit sRGB (display value * 255, rounded), alpha 255.
 util::Rgba8Image reflectionDisplayImage(const FloatImage& reflection, float exposure);
