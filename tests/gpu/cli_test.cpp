@@ -46,6 +46,47 @@ TEST(Cli, SingleCameraWritesIntoOutAndDumpsTheGraph) {
     std::filesystem::remove_all(dir);
 }
 
+TEST(Cli, CompareEveryNamedCameraWritesMetricsAndContactSheets) {
+    auto dir = tempDir("cli-compare");
+    RunResult r = runPpr("compare --validation --size 320x180 --frames 1 --technique ppr --technique none --out " + dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    scene::Scene s = scene::loadGltf(PPR_DEFAULT_SCENE_FILE);
+    auto summary = readJson(dir / "metrics.json");
+    EXPECT_EQ(summary["validation_errors"], 0);
+    for (const scene::NamedCamera& c : s.cameras) {
+        auto m = readJson(dir / c.name / "metrics.json");
+        EXPECT_EQ(m["validation_errors"], 0) << c.name;
+        for (const char* t : {"ppr", "none"})
+            for (const char* key : {"psnr_db", "psnr_reflection_db", "coverage", "gpu_ms"}) EXPECT_TRUE(m["techniques"][t].contains(key)) << t << key;
+        EXPECT_GT(m["reference"]["gpu_ms"].get<double>(), 0.0);
+        // PPR reflects; `none` covers nothing and scores lower.
+        EXPECT_GT(m["techniques"]["ppr"]["coverage"].get<double>(), 0.9) << c.name;
+        EXPECT_EQ(m["techniques"]["none"]["coverage"].get<double>(), 0.0) << c.name;
+        EXPECT_GT(m["techniques"]["ppr"]["psnr_db"].get<double>(), m["techniques"]["none"]["psnr_db"].get<double>()) << c.name;
+        EXPECT_GT(m["techniques"]["ppr"]["gpu_ms"].get<double>(), 0.0);
+        EXPECT_EQ(summary["cameras"][c.name]["ppr"]["coverage"], m["techniques"]["ppr"]["coverage"]);
+        const util::Rgba8Image contact = util::readPng((dir / c.name / "contact.png").string());
+        EXPECT_GT(contact.width, 3u * 320u) << "three columns: ppr, none, reference";
+        EXPECT_GT(contact.height, 3u * 180u) << "three rows: final, reflection, error";
+    }
+    std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, CaptureTechniquesRecordTheirPasses) {
+    auto dir = tempDir("cli-tech");
+    for (const char* t : {"ppr", "planar"}) {
+        RunResult r = runPpr(std::string("capture --camera mirror --size 160x90 --frames 1 --technique ") + t + " --out " + (dir / t).string());
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        auto report = readJson(dir / t / "report.json");
+        EXPECT_EQ(report["technique"], t);
+        EXPECT_GT(report["technique_gpu_ms"].get<double>(), 0.0);
+        EXPECT_TRUE(report["passes"].contains(std::string(t) == "ppr" ? "ppr.project" : "planar.clear")) << t;
+    }
+    auto ppr = readJson(dir / "ppr" / "report.json");
+    for (const char* pass : {"ppr.clear", "ppr.project", "ppr.reflect"}) EXPECT_TRUE(ppr["passes"].contains(pass)) << pass;
+    std::filesystem::remove_all(dir);
+}
+
 struct BadInput {
     const char* name;
     const char* args;
@@ -70,6 +111,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"unknown_camera", "--camera nowhere", "known:"}, BadInput{"nan_camera", "--camera 1,2,3,nan,0", "--camera"},
                       BadInput{"missing_scene", "--scene /nonexistent/scene.gltf", "/nonexistent/scene.gltf"},
                       BadInput{"unknown_technique", "--technique raytracing", "available"}, BadInput{"unknown_option", "--bogus", "unknown option"},
+                      BadInput{"ppr_size_beyond_encoding", "--size 4100x64", "4096"},
+                      BadInput{"bad_toggle", "--set holes=2", "expected one of 0|1"},
                       BadInput{"nan_reflector", "--reflectors " PPR_TEST_DATA_DIR "/reflectors/bad_nan.json", "bad_nan.json"},
                       BadInput{"missing_reflectors", "--reflectors /nonexistent/r.json", "/nonexistent/r.json"},
                       BadInput{"gltf_index_out_of_range", "--scene /usr/share/assimp/models/glTF2/IndexOutOfRange/IndexOutOfRange.gltf", "IndexOutOfRange.gltf"},
