@@ -79,6 +79,7 @@ struct GlfwSession {
 struct InputEvents {
     float wheel = 0.0f;
     int cycleDebug = 0;
+    int cycleTechnique = 0;
     bool capture = false;
     bool resized = false;
 };
@@ -87,6 +88,7 @@ void onKey(GLFWwindow* w, int key, int, int action, int) {
     auto* in = static_cast<InputEvents*>(glfwGetWindowUserPointer(w));
     if (!in || action != GLFW_PRESS) return;
     if (key == GLFW_KEY_F2) ++in->cycleDebug;
+    if (key == GLFW_KEY_F3) ++in->cycleTechnique;
     if (key == GLFW_KEY_F12) in->capture = true;
 }
 void onScroll(GLFWwindow* w, double, double dy) {
@@ -164,6 +166,7 @@ private:
     TimingHistory timings_;
     std::deque<double> frameMs_, cpuMs_;
     std::string status_;
+    std::string warning_;  // from the renderer (e.g. PPR refused at this size), shown in the panel
     bool captureRequested_ = false;
     uint64_t frames_ = 0;
 };
@@ -204,6 +207,7 @@ Viewer::Viewer(const Options& o, vk::Context& ctx, const scene::Scene& scene) : 
 
     renderer_ = std::make_unique<Renderer>(ctx, scene);
     for (const std::string& kv : o.sets) renderer_->settings().apply(kv);
+    renderer_->setTechnique(o.technique);
     renderer_->prepareTargetFormat(swapchain_->format());
     uiPass_ = std::make_unique<passes::UiPass>(ctx);
     imgui_ = std::make_unique<ImGuiLayer>(ctx, window_.handle, *uiPass_, swapchain_->format(), swapchain_->imageCount());
@@ -298,6 +302,8 @@ void Viewer::buildUi() {
     m.cameraSpeed = camera_.speed;
     m.vsync = vsync_;
     m.settings = &renderer_->settings();
+    m.technique = renderer_->technique();
+    m.warning = warning_;
     m.timings = &timings_;
     m.status = status_;
     const PanelActions a = drawPanel(m);
@@ -314,6 +320,7 @@ void Viewer::buildUi() {
         swapchainDirty_ = true;
     }
     if (a.capture) captureRequested_ = true;
+    if (!a.technique.empty()) renderer_->setTechnique(a.technique);
 }
 
 bool Viewer::renderFrame(uint32_t slot) {
@@ -351,6 +358,7 @@ bool Viewer::renderFrame(uint32_t slot) {
     req.overlay = [this](graph::RenderGraph& g, graph::ImageHandle image) { return imgui_->addPass(g, image); };
     const FrameRecord rec = renderer_->record(cmd, slot, req);
     if (!rec.cullLog.empty() && frames_ == 0) std::fprintf(stderr, "%s", rec.cullLog.c_str());
+    warning_ = rec.warning;
     VK_CHECK(vkEndCommandBuffer(cmd));
 
     vk::submit(ctx_, cmd, sync_.fence[slot], sync_.acquired[slot], VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
@@ -393,7 +401,8 @@ void Viewer::saveCapture() {
         info.camera = cameraName_;
         info.pose = camera_.pose;
         info.size = extent;
-        info.technique = options_.technique;
+        info.technique = renderer_->technique();
+        info.reflectors = renderer_->reflectors().size();
         info.settings = &renderer_->settings();
         info.validationEnabled = ctx_.validationEnabled();
         info.validationErrors = ctx_.validationErrors() - errorsBefore;
@@ -442,6 +451,8 @@ void Viewer::run(uint64_t maxFrames, uint64_t captureAt) {
         const Clock::time_point cpuStart = Clock::now();
         for (; input_.cycleDebug > 0; --input_.cycleDebug)
             if (!imgui_->wantsTextInput()) cycleDebugView(renderer_->settings());
+        for (; input_.cycleTechnique > 0; --input_.cycleTechnique)
+            if (!imgui_->wantsTextInput()) renderer_->setTechnique(nextTechnique(renderer_->technique()));
         if (input_.capture) {
             input_.capture = false;
             if (!imgui_->wantsTextInput()) captureRequested_ = true;

@@ -159,6 +159,12 @@ bool ImGuiLayer::wantsTextInput() const { return ImGui::GetIO().WantTextInput; }
 // ---------------------------------------------------------------------------------------------------
 // Panel
 
+std::string nextTechnique(const std::string& current) {
+    const auto& list = techniqueNames();
+    auto it = std::find(list.begin(), list.end(), current);
+    return it == list.end() || it + 1 == list.end() ? list.front() : *(it + 1);
+}
+
 std::string cycleDebugView(Settings& settings) {
     for (const SettingSpec& s : settingSpecs()) {
         if (s.key != "debug" || s.choices.empty()) continue;
@@ -251,7 +257,7 @@ PanelActions drawPanel(PanelModel& m) {
     ImGui::Text("%u x %u", m.extent.width, m.extent.height);
     ImGui::Text("frame %.2f ms (%.1f FPS)", m.frameMs, m.frameMs > 0.0 ? 1000.0 / m.frameMs : 0.0);
     ImGui::Text("CPU %.2f ms (UI, record, submit, present)", m.cpuMs);
-    ImGui::TextDisabled("F2: cycle debug view  F12: capture");
+    ImGui::TextDisabled("F2: debug view  F3: technique  F12: capture");
     ImGui::TextDisabled("WASD move, Q/E down/up");
     ImGui::TextDisabled("right mouse: look, wheel: speed");
 
@@ -268,6 +274,16 @@ PanelActions drawPanel(PanelModel& m) {
         }
         ImGui::Text("camera speed %.2f m/s", m.cameraSpeed);
         if (ImGui::Checkbox("vsync", &m.vsync)) a.vsyncChanged = true;
+    }
+
+    if (ImGui::CollapsingHeader("Technique", ImGuiTreeNodeFlags_DefaultOpen)) {
+        if (ImGui::BeginCombo("technique", m.technique.c_str())) {
+            for (const std::string& t : techniqueNames())
+                if (ImGui::Selectable(t.c_str(), t == m.technique)) a.technique = t;
+            ImGui::EndCombo();
+        }
+        ImGui::TextDisabled("planar = ground truth (re-renders the scene per plane)");
+        if (!m.warning.empty()) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.2f, 1.0f), "%s", m.warning.c_str());
     }
 
     if (ImGui::CollapsingHeader("Settings", ImGuiTreeNodeFlags_DefaultOpen)) {

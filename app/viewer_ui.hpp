@@ -4,6 +4,7 @@
 // panel (device, frame times, cameras, vsync, every --set setting, GPU timing table, capture).
 #include "renderer.hpp"
 #include "scene_source.hpp"
+#include "techniques.hpp"
 #include "ui/ui_pass.hpp"
 
 #include <deque>
@@ -76,6 +77,8 @@ struct PanelModel {
     float cameraSpeed = 0.0f;
     bool vsync = true;
     Settings* settings = nullptr;
+    std::string technique;  // current; a change comes back in PanelActions::technique
+    std::string warning;    // the renderer's, shown in the panel
     const TimingHistory* timings = nullptr;
     std::string status;  // last capture result or settings error
 };
@@ -84,11 +87,14 @@ struct PanelActions {
     int jumpToCamera = -1;
     bool vsyncChanged = false;
     bool capture = false;
+    std::string technique;  // non-empty: switch to it
 };
 
 PanelActions drawPanel(PanelModel& model);
 
 // F2: next value of the `debug` setting (wraps around). Returns the new value.
 std::string cycleDebugView(Settings& settings);
+// F3: the technique after `current` in techniqueNames() (wraps around).
+std::string nextTechnique(const std::string& current);
 
 }  // namespace ppr::app
