@@ -2,9 +2,8 @@
 
 #include "common/reflection.h"
 #include "contact_sheet.hpp"
-#include "headless.hpp"
+#include "headless_session.hpp"
 #include "report.hpp"
-#include "scene_source.hpp"
 
 #include <cstdio>
 #include <filesystem>
@@ -43,30 +42,22 @@ std::string fixed(double v, int digits) {
 }  // namespace
 
 int runCompare(const Options& o) {
-    const scene::Scene scene = loadScene(o);
-    const std::vector<ResolvedCamera> cameras = resolveCameras(scene, o.camera);
-    vk::ContextOptions co;
-    co.validation = o.validation;
-    auto ctx = vk::Context::create(co);
-    std::printf("ppr: %s (%s, Vulkan %s)%s\n", ctx->info().name.c_str(), ctx->info().type.c_str(), ctx->info().apiVersionString.c_str(),
-                ctx->validationEnabled() ? ", validation + synchronization validation on" : "");
-    Renderer renderer(*ctx, scene);
-    for (const std::string& kv : o.sets) renderer.settings().apply(kv);
-    HeadlessRenderer headless(*ctx, renderer);
-    const VkExtent2D extent{o.width, o.height};
-    const uint32_t frames = o.frames ? o.frames : 5;
+    HeadlessSession session(o);
+    const vk::Context& ctx = *session.ctx;
+    Renderer& renderer = *session.renderer;
+    HeadlessRenderer& headless = *session.headless;
+    const VkExtent2D extent = session.extent;
+    const uint32_t frames = session.frames;
     const float exposure = static_cast<float>(renderer.settings().number("exposure"));
 
-    const bool single = cameras.size() == 1;
     nlohmann::json summary;
-    summary["device"] = ctx->info().name;
+    summary["device"] = ctx.info().name;
     summary["size"] = {extent.width, extent.height};
     summary["techniques"] = o.techniques;
     summary["cameras"] = nlohmann::json::object();
-    for (const ResolvedCamera& cam : cameras) {
-        const std::filesystem::path dir = single ? std::filesystem::path(o.out) : std::filesystem::path(o.out) / cam.name;
-        std::filesystem::create_directories(dir);
-        const uint32_t errorsBefore = ctx->validationErrors();
+    for (const ResolvedCamera& cam : session.cameras) {
+        const std::filesystem::path dir = session.cameraDir(cam.name);
+        const uint32_t errorsBefore = ctx.validationErrors();
 
         renderer.setTechnique("planar");
         const CaptureResult ref = headless.capture(cam.pose, extent, frames, false, true);
@@ -76,7 +67,7 @@ int runCompare(const Options& o) {
         nlohmann::json metrics;
         metrics["camera"] = cam.name;
         metrics["size"] = {extent.width, extent.height};
-        metrics["device"] = ctx->info().name;
+        metrics["device"] = ctx.info().name;
         metrics["settings"] = renderer.settings().all();
         metrics["frames"] = frames;
         metrics["reference"] = {{"technique", "planar"},
@@ -125,21 +116,16 @@ int runCompare(const Options& o) {
         tiles.insert(tiles.end(), errors.begin(), errors.end());
         util::writePng((dir / "contact.png").string(), makeContactSheet(tiles, static_cast<uint32_t>(finals.size())));
         metrics["images"] = {{"contact", "contact.png"}};
-        metrics["validation"] = ctx->validationEnabled();
-        metrics["validation_errors"] = ctx->validationErrors() - errorsBefore;
+        metrics["validation"] = ctx.validationEnabled();
+        metrics["validation_errors"] = ctx.validationErrors() - errorsBefore;
         writeJsonFile((dir / "metrics.json").string(), metrics);
         std::printf("ppr: %-8s -> %s\n", cam.name.c_str(), (dir / "contact.png").c_str());
     }
-    if (!single) {
-        summary["validation_errors"] = ctx->validationErrors();
+    if (!session.singleCamera()) {
+        summary["validation_errors"] = ctx.validationErrors();
         writeJsonFile((std::filesystem::path(o.out) / "metrics.json").string(), summary);
     }
-    if (ctx->validationErrors() > 0) {
-        std::fprintf(stderr, "ppr: %u validation error(s)\n", ctx->validationErrors());
-        return 1;
-    }
-    std::printf("ppr: wrote %s\n", std::filesystem::absolute(o.out).c_str());
-    return 0;
+    return session.finish();
 }
 
 }  // namespace ppr::app

@@ -1,0 +1,34 @@
+#pragma once
+// What `ppr capture` and `ppr compare` share: the scene and cameras from the options, a Vulkan context
+// (device line printed), the renderer with the --set values applied, the headless frame loop, the
+// per-camera output folders and the exit code.
+#include "cli.hpp"
+#include "headless.hpp"
+#include "scene_source.hpp"
+
+#include <filesystem>
+#include <memory>
+
+namespace ppr::app {
+
+struct HeadlessSession {
+    explicit HeadlessSession(const Options& options);
+    ~HeadlessSession();
+
+    // One camera: files go straight into --out; several: one sub-folder per camera (created here).
+    std::filesystem::path cameraDir(const std::string& camera) const;
+    bool singleCamera() const { return cameras.size() == 1; }
+    // 1 (with a message) when validation reported errors, else 0 after printing where the files are.
+    int finish() const;
+
+    const Options& options;
+    scene::Scene scene;
+    std::vector<ResolvedCamera> cameras;
+    std::unique_ptr<vk::Context> ctx;
+    std::unique_ptr<Renderer> renderer;
+    std::unique_ptr<HeadlessRenderer> headless;
+    VkExtent2D extent{};
+    uint32_t frames = 5;
+};
+
+}  // namespace ppr::app
