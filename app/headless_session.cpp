@@ -20,11 +20,6 @@ HeadlessSession::HeadlessSession(const Options& o) : options(o) {
     frames = o.frames ? o.frames : 5;
 }
 
-HeadlessSession::~HeadlessSession() {
-    headless.reset();
-    renderer.reset();
-}
-
 std::filesystem::path HeadlessSession::cameraDir(const std::string& camera) const {
     const std::filesystem::path dir = singleCamera() ? std::filesystem::path(options.out) : std::filesystem::path(options.out) / camera;
     std::filesystem::create_directories(dir);

@@ -13,7 +13,6 @@ namespace ppr::app {
 
 struct HeadlessSession {
     explicit HeadlessSession(const Options& options);
-    ~HeadlessSession();
 
     // One camera: files go straight into --out; several: one sub-folder per camera (created here).
     std::filesystem::path cameraDir(const std::string& camera) const;
@@ -22,6 +21,7 @@ struct HeadlessSession {
     int finish() const;
 
     const Options& options;
+    // Declaration order is teardown order in reverse: the headless loop and renderer go before the context.
     scene::Scene scene;
     std::vector<ResolvedCamera> cameras;
     std::unique_ptr<vk::Context> ctx;

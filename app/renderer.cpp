@@ -133,7 +133,7 @@ gpu::FrameConstants Renderer::mainConstants(const FrameRequest& req) const {
     return f;
 }
 
-Renderer::Views Renderer::writeFrameConstants(uint32_t slot, const FrameRequest& req) {
+Renderer::Views Renderer::writeFrameConstants(uint32_t slot, const FrameRequest& req, const std::string& technique) {
     Views views;
     const gpu::FrameConstants main = mainConstants(req);
     ++frameIndex_;
@@ -142,7 +142,7 @@ Renderer::Views Renderer::writeFrameConstants(uint32_t slot, const FrameRequest&
         std::memcpy(static_cast<char*>(frameConstants_.mapped) + offset, &f, sizeof(f));
     };
     write(0, main);
-    if (technique_ == "planar") {
+    if (technique == "planar") {
         // One mirrored view per plane group with a visible reflector, in group order.
         const scene::ReflectorGroups& groups = reflectorBuffer_->groups();
         std::vector<int> representative(groups.planeGroupCount, -1);
@@ -171,10 +171,10 @@ Renderer::Views Renderer::writeFrameConstants(uint32_t slot, const FrameRequest&
     return views;
 }
 
-std::optional<graph::ImageHandle> Renderer::addReflection(graph::RenderGraph& g, uint32_t slot, const passes::FrameInputs& in,
-                                                          const passes::GBuffer& gb, graph::ImageHandle lit, graph::ImageHandle shadowMap,
-                                                          const Views& views) {
-    if (technique_ == "ppr") {
+std::optional<graph::ImageHandle> Renderer::addReflection(graph::RenderGraph& g, const std::string& technique, uint32_t slot,
+                                                          const passes::FrameInputs& in, const passes::GBuffer& gb, graph::ImageHandle lit,
+                                                          graph::ImageHandle shadowMap, const Views& views) {
+    if (technique == "ppr") {
         const passes::ReflectorBinding binding{reflectorBuffer_->reflectors(slot), reflectorBuffer_->order(slot), reflectorBuffer_->count()};
         graph::ImageHandle intermediate = passes::addPprClearPass(g, "ppr.intermediate", in.extent);
         intermediate = pprProject_->add(g, in, gb.depth, binding, intermediate);
@@ -184,27 +184,27 @@ std::optional<graph::ImageHandle> Renderer::addReflection(graph::RenderGraph& g,
         if (settings_.get("antibleed") == "1") flags |= gpu::kPprAntiBleeding;
         return pprReflect_->add(g, in, intermediate, lit, gb.reflector, flags, debugViewIndex(settings_.get("debug")));
     }
-    if (technique_ == "planar") return planar_->add(g, in, gb, shadowMap, views.planar, reflectorBuffer_->reflectors(slot));
+    if (technique == "planar") return planar_->add(g, in, gb, shadowMap, views.planar, reflectorBuffer_->reflectors(slot));
     return std::nullopt;
 }
 
 FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequest& req) {
     FrameRecord rec;
-    const std::string requested = technique_;
-    if (technique_ == "ppr" && std::max(req.extent.width, req.extent.height) > gpu::kPprMaxExtent) {
+    std::string technique = technique_;
+    if (technique == "ppr" && std::max(req.extent.width, req.extent.height) > gpu::kPprMaxExtent) {
         // The intermediate encoding holds offsets up to 4095 px; larger frames render without PPR.
         rec.warning = "PPR is limited to " + std::to_string(gpu::kPprMaxExtent) + " px per side (12-bit offsets); rendering without reflections";
-        technique_ = "none";
+        technique = "none";
     }
     reflectorBuffer_->update(slot, reflectorList_, reflectorVersion_);
-    const Views views = writeFrameConstants(slot, req);
+    const Views views = writeFrameConstants(slot, req, technique);
     const passes::FrameInputs in = frameInputs(slot, 0, req.extent);
 
     graph::RenderGraph g;
     graph::ImageHandle shadowMap = shadow_->add(g, in, static_cast<uint32_t>(settings_.number("shadowres")));
     passes::GBuffer gb = gbuffer_->add(g, in);
     graph::ImageHandle lit = lighting_->add(g, in, gb, shadowMap);
-    std::optional<graph::ImageHandle> reflection = addReflection(g, slot, in, gb, lit, shadowMap, views);
+    std::optional<graph::ImageHandle> reflection = addReflection(g, technique, slot, in, gb, lit, shadowMap, views);
     std::optional<passes::CompositeReflection> blend;
     if (reflection) blend = passes::CompositeReflection{*reflection, reflectorBuffer_->reflectors(slot)};
     graph::ImageHandle hdr = composite_->add(g, in, gb, lit, blend);
@@ -220,7 +220,6 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
 
     g.compile();
     executor_->execute(g, cmd, slot);
-    technique_ = requested;
     rec.cullLog = g.cullLog();
     if (req.dumpGraph) rec.dot = g.toDot();
     return rec;

@@ -78,10 +78,10 @@ private:
     gpu::FrameConstants mainConstants(const FrameRequest& request) const;
     void ensureViewCapacity(uint32_t views);
     passes::FrameInputs frameInputs(uint32_t slot, uint32_t view, VkExtent2D extent) const;
-    Views writeFrameConstants(uint32_t slot, const FrameRequest& request);
-    std::optional<graph::ImageHandle> addReflection(graph::RenderGraph& g, uint32_t slot, const passes::FrameInputs& in,
-                                                    const passes::GBuffer& gb, graph::ImageHandle lit, graph::ImageHandle shadowMap,
-                                                    const Views& views);
+    Views writeFrameConstants(uint32_t slot, const FrameRequest& request, const std::string& technique);
+    std::optional<graph::ImageHandle> addReflection(graph::RenderGraph& g, const std::string& technique, uint32_t slot,
+                                                    const passes::FrameInputs& in, const passes::GBuffer& gb, graph::ImageHandle lit,
+                                                    graph::ImageHandle shadowMap, const Views& views);
     const vk::Context& ctx_;
     const scene::Scene& scene_;
     Settings settings_;

@@ -1,5 +1,6 @@
 #include "planar/planar_pass.hpp"
 
+#include "common/clear_pass.hpp"
 #include "common/compute_pass.hpp"
 #include "planar/planar.h"
 #include "planar_resolve_comp.h"
@@ -22,33 +23,19 @@ PlanarPass::PlanarPass(const vk::Context& ctx, const GBufferPass& gbuffer, const
 graph::ImageHandle PlanarPass::add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::ImageHandle shadowMap,
                                    const std::vector<PlanarView>& views, VkBuffer reflectors) const {
     // Start from "no reflection" everywhere; each plane group's resolve fills its own pixels.
-    struct ClearData {
-        graph::ImageHandle image;
-    };
-    const graph::ImageHandle created =
-        g.createImage("reflection", {in.extent.width, in.extent.height, PprReflectPass::kReflectionFormat, 1});
-    graph::ImageHandle reflection = g.addPass<ClearData>(
-                                         "planar.clear", graph::QueueKind::Transfer,
-                                         [&](graph::PassBuilder& b, ClearData& d) { d.image = b.transferDst(created); },
-                                         [](const ClearData& d, graph::PassContext& pc) {
-                                             const VkClearColorValue zero{};
-                                             const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-                                             vkCmdClearColorImage(pc.cmd(), pc.image(d.image), pc.layout(d.image), &zero, 1, &range);
-                                         })
-                                         .image;
-
-    // One mirrored G-buffer and colour image, rewritten view after view (the graph orders the reuse),
-    // instead of a full set per plane.
+    graph::ImageHandle reflection = addClearPass(
+        g, "planar.clear", g.createImage("reflection", {in.extent.width, in.extent.height, PprReflectPass::kReflectionFormat, 1}), {});
     if (views.empty()) return reflection;
     GBuffer mirrored = GBufferPass::createTargets(g, "planar.gbuffer", in.extent);
     graph::ImageHandle mirroredColor = g.createImage("planar.color", {in.extent.width, in.extent.height, LightingPass::kColorFormat, 1});
     for (const PlanarView& v : views) {
-        const std::string suffix = "." + std::to_string(v.planeGroup);
-        mirrored = gbuffer_.add(g, v.in, "planar.gbuffer" + suffix, &mirrored);
-        mirroredColor = lighting_.add(g, v.in, mirrored, shadowMap, "planar.lighting" + suffix, mirroredColor);
+        // Pass names "planar.<step>.<plane group>", one timing row per plane.
+        const std::string plane = std::to_string(v.planeGroup);
+        mirrored = gbuffer_.add(g, v.in, "planar.gbuffer." + plane, &mirrored);
+        mirroredColor = lighting_.add(g, v.in, mirrored, shadowMap, "planar.lighting." + plane, mirroredColor);
         gpu::PlanarResolvePush push{};
         push.planeGroup = v.planeGroup;
-        ComputePass(g, ctx_, "planar.resolve" + suffix, resolve_)
+        ComputePass(g, ctx_, "planar.resolve." + plane, resolve_)
             .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
             .uniform(v.in.frameConstants, v.in.frameConstantsOffset, v.in.frameConstantsSize)
             .sampled(mirroredColor, in.samplers->nearestClamp)
