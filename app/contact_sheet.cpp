@@ -61,6 +61,14 @@ void drawText(util::Rgba8Image& image, int x, int y, const std::string& text, in
                     ClipRect{0, 0, static_cast<int>(image.width), static_cast<int>(image.height)});
 }
 
+int textWidth(const std::string& text, int scale) {
+    // Same substitution as drawTextClipped, so the width matches what is drawn.
+    std::string safe = text;
+    for (char& c : safe)
+        if (c != '\n' && (c < 32 || c > 126)) c = '?';
+    return stb_easy_font_width(safe.data()) * std::max(scale, 1);
+}
+
 util::Rgba8Image makeContactSheet(const std::vector<ContactTile>& tiles, uint32_t columns) {
     if (tiles.empty()) throw std::invalid_argument("contact sheet: no tiles");
     if (columns == 0) throw std::invalid_argument("contact sheet: columns must be at least 1");

@@ -38,4 +38,9 @@ util::Rgba8Image makeContactSheet(const std::vector<ContactTile>& tiles, uint32_
 // characters stb_easy_font has no glyph for are drawn as '?'.
 void drawText(util::Rgba8Image& image, int x, int y, const std::string& text, int scale, uint8_t r, uint8_t g, uint8_t b);
 
+// Width in pixels of the widest line drawText would draw for `text` at `scale` (< 1 counts as 1),
+// including the 1-pixel spacing after the last glyph. Digits and capitals are 7 * scale pixels tall
+// from the top of the line; descenders reach 9 * scale.
+int textWidth(const std::string& text, int scale);
+
 }  // namespace ppr::app
