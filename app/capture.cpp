@@ -3,6 +3,7 @@
 #include "headless_session.hpp"
 #include "report.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 
@@ -18,6 +19,7 @@ int runCapture(const Options& o) {
         const uint32_t errorsBefore = s.ctx->validationErrors();
         CaptureResult r = s.headless->capture(cam.pose, s.extent, s.frames, o.dumpGraph);
         if (!r.cullLog.empty()) std::fprintf(stderr, "%s", r.cullLog.c_str());
+        if (!r.warning.empty()) std::fprintf(stderr, "ppr: warning: %s\n", r.warning.c_str());
         util::writePng((dir / "final.png").string(), r.image);
         ReportInfo info;
         info.scene = s.scene.sourcePath;
@@ -26,6 +28,7 @@ int runCapture(const Options& o) {
         info.size = s.extent;
         info.technique = o.technique;
         info.reflectors = s.renderer->reflectors().size();
+        info.reflectorsProjected = std::min<size_t>(info.reflectors, gpu::kPprMaxReflectors);
         info.settings = &s.renderer->settings();
         info.validationEnabled = s.ctx->validationEnabled();
         info.validationErrors = s.ctx->validationErrors() - errorsBefore;

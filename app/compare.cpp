@@ -79,6 +79,7 @@ int runCompare(const Options& o) {
         for (const std::string& t : o.techniques) {
             renderer.setTechnique(t);
             const CaptureResult r = headless.capture(cam.pose, extent, frames, false, true);
+            if (!r.warning.empty()) std::fprintf(stderr, "ppr: warning: %s\n", r.warning.c_str());
             const FloatImage reflection = r.reflection.rgba.empty() ? emptyReflection(extent) : r.reflection;
             const ReflectionScore s = scoreReflection(reflection, ref.reflection, exposure);
             const double psnr = compositedPsnrDb(r.image, ref.image, ref.reflection);

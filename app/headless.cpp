@@ -74,6 +74,7 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
     std::map<std::string, std::vector<double>> perPass;
     std::vector<double> totals;
     bool reflectionCopied = false;
+    uint32_t lastSlot = 0;
     auto collect = [&](uint32_t slot) {
         if (!slotBusy_[slot]) return;
         VK_CHECK(vkWaitForFences(ctx_.device(), 1, &fences_[slot], VK_TRUE, UINT64_MAX));
@@ -111,6 +112,8 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
         req.dumpGraph = last && dumpGraph;
         FrameRecord rec = renderer_.record(cmd, slot, req);
         if (last) {
+            lastSlot = slot;
+            result.warning = rec.warning;
             reflectionCopied = rec.reflectionCopied;
             result.cullLog = rec.cullLog;
             result.dot = rec.dot;
@@ -120,6 +123,7 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
         slotBusy_[slot] = true;
     }
     for (uint32_t s = 0; s < Renderer::kFramesInFlight; ++s) collect(s);
+    result.pprStats = renderer_.frameStats(lastSlot);
 
     vmaInvalidateAllocation(ctx_.allocator(), readback_.allocation, 0, VK_WHOLE_SIZE);
     result.image.width = extent.width;

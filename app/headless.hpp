@@ -6,6 +6,7 @@
 #include "util/image_io.hpp"
 
 #include <map>
+#include <optional>
 
 namespace ppr::app {
 
@@ -19,6 +20,8 @@ struct CaptureResult {
     std::vector<std::string> passOrder;          // execution order
     std::string cullLog;
     std::string dot;
+    std::string warning;                         // the renderer's, e.g. reflectors beyond PPR's budget
+    std::optional<gpu::PprFrameStats> pprStats;  // tile and culling counts of the last frame (PPR only)
 };
 
 class HeadlessRenderer {

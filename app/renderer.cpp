@@ -25,6 +25,7 @@ uint32_t debugViewIndex(const std::string& name) {
     if (name == "depth") return gpu::kDebugDepth;
     if (name == "intermediate") return gpu::kDebugIntermediate;
     if (name == "holes") return gpu::kDebugHoles;
+    if (name == "tiles") return gpu::kDebugTiles;
     return gpu::kDebugNone;
 }
 
@@ -54,6 +55,15 @@ Renderer::Renderer(const vk::Context& ctx, const scene::Scene& scene) : ctx_(ctx
     tonemap_->prepare(kCaptureFormat);
     pprProject_ = std::make_unique<passes::PprProjectPass>(ctx);
     pprReflect_ = std::make_unique<passes::PprReflectPass>(ctx);
+    pprBounds_ = std::make_unique<passes::PprBoundsPass>(ctx);
+    tileClassify_ = std::make_unique<passes::TileClassifyPass>(ctx);
+    for (uint32_t slot = 0; slot < kFramesInFlight; ++slot) {
+        stats_[slot] = vk::createBuffer(ctx, sizeof(gpu::PprFrameStats), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback,
+                                        "ppr stats[" + std::to_string(slot) + "]");
+        statsImport_[slot].buffer = stats_[slot].buffer;
+        statsImport_[slot].desc = {sizeof(gpu::PprFrameStats)};
+        statsImport_[slot].finalAccess = graph::Access::HostRead;
+    }
     planar_ = std::make_unique<passes::PlanarPass>(ctx, *gbuffer_, *lighting_);
     reflectorBuffer_ = std::make_unique<passes::ReflectorBuffer>(ctx, kFramesInFlight);
     executor_ = std::make_unique<graph::GraphExecutor>(ctx, kFramesInFlight);
@@ -66,6 +76,9 @@ Renderer::~Renderer() {
     vkDeviceWaitIdle(ctx_.device());
     executor_.reset();
     vk::destroyBuffer(ctx_, frameConstants_);
+    for (vk::Buffer& b : stats_) vk::destroyBuffer(ctx_, b);
+    tileClassify_.reset();
+    pprBounds_.reset();
     reflectorBuffer_.reset();
     planar_.reset();
     pprReflect_.reset();
@@ -87,6 +100,13 @@ void Renderer::setTechnique(const std::string& technique) {
 void Renderer::setReflectors(std::vector<scene::Reflector> reflectors) {
     reflectorList_ = std::move(reflectors);
     ++reflectorVersion_;
+    reflectorWarning_.clear();
+    if (reflectorList_.size() > gpu::kPprMaxReflectors) {
+        const size_t extra = reflectorList_.size() - gpu::kPprMaxReflectors;
+        reflectorWarning_ = std::to_string(reflectorList_.size()) + " reflectors exceed PPR's budget of " +
+                            std::to_string(gpu::kPprMaxReflectors) + ": the last " + std::to_string(extra) + " (from '" +
+                            reflectorList_[gpu::kPprMaxReflectors].name + "' on) get no PPR reflection";
+    }
     // Worst case every reflector is its own visible plane: size the per-frame views once per change.
     ensureViewCapacity(1 + static_cast<uint32_t>(reflectorList_.size()));
 }
@@ -175,26 +195,56 @@ std::optional<graph::ImageHandle> Renderer::addReflection(graph::RenderGraph& g,
                                                           const passes::FrameInputs& in, const passes::GBuffer& gb, graph::ImageHandle lit,
                                                           graph::ImageHandle shadowMap, const Views& views) {
     if (technique == "ppr") {
-        const passes::ReflectorBinding binding{reflectorBuffer_->reflectors(slot), reflectorBuffer_->order(slot), reflectorBuffer_->count()};
-        graph::ImageHandle intermediate = passes::addPprClearPass(g, "ppr.intermediate", in.extent);
-        intermediate = pprProject_->add(g, in, gb.depth, binding, intermediate);
-        uint32_t flags = 0;
-        if (settings_.get("holes") == "1") flags |= gpu::kPprHoleFilling;
-        if (settings_.get("filter") == "1") flags |= gpu::kPprFiltering;
-        if (settings_.get("antibleed") == "1") flags |= gpu::kPprAntiBleeding;
-        return pprReflect_->add(g, in, intermediate, lit, gb.reflector, flags, debugViewIndex(settings_.get("debug")));
+        const uint32_t projected = reflectorBuffer_->projected();
+        const passes::ReflectorBinding binding{reflectorBuffer_->reflectors(slot), reflectorBuffer_->order(slot), projected};
+        const passes::TileLists tiles = tileClassify_->add(g, in, gb, g.importBuffer("ppr.stats", &statsImport_[slot]), projected);
+        passes::PprProjectInputs project;
+        project.depth = gb.depth;
+        project.intermediate = passes::addPprClearPass(g, "ppr.intermediate", in.extent);
+        project.bounds = pprBounds_->add(g, in, binding.reflectors, projected);
+        project.stats = tiles.stats;
+        project.tilesX = tiles.tilesX;
+        project.tilesY = tiles.tilesY;
+        project.cullTiles = settings_.get("tiles") == "1";
+        const passes::PprProjectOutputs scatter = pprProject_->add(g, in, binding, project);
+        statsWritten_[slot] = true;
+
+        passes::PprReflectInputs reflect;
+        reflect.intermediate = scatter.intermediate;
+        reflect.sceneColor = lit;
+        reflect.reflectorIds = gb.reflector;
+        reflect.tileSurvivors = scatter.tileSurvivors;
+        reflect.tiles = &tiles;
+        reflect.debugView = debugViewIndex(settings_.get("debug"));
+        reflect.maxReflectorId = projected;
+        if (settings_.get("holes") == "1") reflect.flags |= gpu::kPprHoleFilling;
+        if (settings_.get("filter") == "1") reflect.flags |= gpu::kPprFiltering;
+        if (settings_.get("antibleed") == "1") reflect.flags |= gpu::kPprAntiBleeding;
+        if (settings_.get("indirect") == "1") reflect.flags |= gpu::kPprIndirect;
+        return pprReflect_->add(g, in, reflect);
     }
     if (technique == "planar") return planar_->add(g, in, gb, shadowMap, views.planar, reflectorBuffer_->reflectors(slot));
     return std::nullopt;
 }
 
+std::optional<gpu::PprFrameStats> Renderer::frameStats(uint32_t slot) const {
+    if (!statsWritten_[slot]) return std::nullopt;
+    vmaInvalidateAllocation(ctx_.allocator(), stats_[slot].allocation, 0, VK_WHOLE_SIZE);
+    gpu::PprFrameStats s;
+    std::memcpy(&s, stats_[slot].mapped, sizeof(s));
+    return s;
+}
+
 FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequest& req) {
     FrameRecord rec;
+    statsWritten_[slot] = false;
     std::string technique = technique_;
     if (technique == "ppr" && std::max(req.extent.width, req.extent.height) > gpu::kPprMaxExtent) {
         // The intermediate encoding holds offsets up to 4095 px; larger frames render without PPR.
         rec.warning = "PPR is limited to " + std::to_string(gpu::kPprMaxExtent) + " px per side (12-bit offsets); rendering without reflections";
         technique = "none";
+    } else if (technique == "ppr" && !reflectorWarning_.empty()) {
+        rec.warning = reflectorWarning_;
     }
     reflectorBuffer_->update(slot, reflectorList_, reflectorVersion_);
     const Views views = writeFrameConstants(slot, req, technique);

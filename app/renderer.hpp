@@ -10,10 +10,13 @@
 #include "graph/executor.hpp"
 #include "lighting/lighting_pass.hpp"
 #include "planar/planar_pass.hpp"
+#include "ppr_bounds/ppr_bounds_pass.hpp"
+#include "ppr_common/tiles.h"
 #include "ppr_project/ppr_project_pass.hpp"
 #include "ppr_reflect/ppr_reflect_pass.hpp"
 #include "settings.hpp"
 #include "shadow/shadow_pass.hpp"
+#include "tile_classify/tile_classify_pass.hpp"
 #include "tonemap/tonemap_pass.hpp"
 
 #include <functional>
@@ -67,6 +70,10 @@ public:
     FrameRecord record(VkCommandBuffer cmd, uint32_t slot, const FrameRequest& request);
     // Per-pass GPU times of the frame last recorded in `slot` (call after its fence signalled).
     std::vector<graph::PassTiming> timings(uint32_t slot) { return executor_->readTimings(slot); }
+    // Tile and culling counters of the frame last recorded in `slot` (after its fence), when it ran PPR.
+    std::optional<gpu::PprFrameStats> frameStats(uint32_t slot) const;
+    // Set while the reflector set exceeds PPR's budget (kPprMaxReflectors): says which are ignored.
+    const std::string& reflectorWarning() const { return reflectorWarning_; }
 
     const graph::GraphExecutor& executor() const { return *executor_; }
     graph::GraphExecutor& executor() { return *executor_; }  // the viewer trims the transient pool after resizes
@@ -94,6 +101,12 @@ private:
     std::unique_ptr<passes::TonemapPass> tonemap_;
     std::unique_ptr<passes::PprProjectPass> pprProject_;
     std::unique_ptr<passes::PprReflectPass> pprReflect_;
+    std::unique_ptr<passes::PprBoundsPass> pprBounds_;
+    std::unique_ptr<passes::TileClassifyPass> tileClassify_;
+    vk::Buffer stats_[kFramesInFlight];  // PprFrameStats, host-read after the slot's fence
+    graph::ExternalBuffer statsImport_[kFramesInFlight];
+    bool statsWritten_[kFramesInFlight]{};
+    std::string reflectorWarning_;
     std::unique_ptr<passes::PlanarPass> planar_;
     std::unique_ptr<passes::ReflectorBuffer> reflectorBuffer_;
     std::unique_ptr<graph::GraphExecutor> executor_;

@@ -14,6 +14,24 @@ double techniqueMs(const std::string& technique, const CaptureResult& r) {
     return sum;
 }
 
+nlohmann::json pprStatsJson(const CaptureResult& r, VkExtent2D size, size_t projected) {
+    if (!r.pprStats) return nullptr;
+    const gpu::PprFrameStats& s = *r.pprStats;
+    const uint32_t tilesX = (size.width + gpu::kPprTileSize - 1) / gpu::kPprTileSize;
+    const uint32_t tilesY = (size.height + gpu::kPprTileSize - 1) / gpu::kPprTileSize;
+    return {{"tile_size", gpu::kPprTileSize},
+            {"tiles", tilesX * tilesY},
+            {"tiles_planar", s.dispatch[gpu::kTileClassPlanar].x},
+            {"tiles_other", s.dispatch[gpu::kTileClassOther].x},
+            {"tiles_with_content", s.tilesWithContent},
+            {"reflectors_projected", projected},
+            // Without culling every content tile would test every reflector.
+            {"reflector_tile_pairs_unculled", uint64_t(s.tilesWithContent) * projected},
+            {"reflector_tile_pairs", s.reflectorTilePairs},
+            {"occluder_tile_pairs", s.occluderTilePairs},
+            {"max_reflectors_per_tile", s.maxTileSurvivors}};
+}
+
 nlohmann::json makeReport(const vk::Context& ctx, const ReportInfo& info, const CaptureResult& r) {
     nlohmann::json j;
     j["device"] = ctx.info().name;
@@ -41,6 +59,8 @@ nlohmann::json makeReport(const vk::Context& ctx, const ReportInfo& info, const 
     j["total_gpu_ms"] = r.totalMedianMs;
     j["technique_gpu_ms"] = techniqueMs(info.technique, r);
     j["reflectors"] = info.reflectors;
+    j["ppr"] = pprStatsJson(r, info.size, info.reflectorsProjected);
+    j["warnings"] = r.warning.empty() ? nlohmann::json::array() : nlohmann::json::array({r.warning});
     j["validation"] = info.validationEnabled;
     j["validation_errors"] = info.validationErrors;
     j["images"] = info.images;

@@ -14,6 +14,7 @@ struct ReportInfo {
     VkExtent2D size{};
     std::string technique;
     size_t reflectors = 0;
+    size_t reflectorsProjected = 0;  // PPR's share (budget)
     const Settings* settings = nullptr;
     uint32_t validationErrors = 0;
     bool validationEnabled = false;
@@ -22,6 +23,8 @@ struct ReportInfo {
 
 // Sum of the median GPU times of the technique's own passes (ppr.* / planar.*).
 double techniqueMs(const std::string& technique, const CaptureResult& result);
+// The "ppr" block of report.json: tile classification and culling counts (null when PPR did not run).
+nlohmann::json pprStatsJson(const CaptureResult& result, VkExtent2D size, size_t reflectorsProjected);
 nlohmann::json makeReport(const vk::Context& ctx, const ReportInfo& info, const CaptureResult& result);
 void writeJsonFile(const std::string& path, const nlohmann::json& j);
 

@@ -8,11 +8,14 @@ namespace ppr::app {
 
 const std::vector<SettingSpec>& settingSpecs() {
     static const std::vector<SettingSpec> specs = {
-        {"debug", "none", {"none", "albedo", "normals", "roughness", "reflectors", "depth", "intermediate", "holes"}, 0, 0,
-         "debug view: G-buffer channels, reflector ids, PPR's decoded intermediate buffer, PPR's hole mask"},
+        {"debug", "none", {"none", "albedo", "normals", "roughness", "reflectors", "depth", "intermediate", "holes", "tiles"}, 0, 0,
+         "debug view: G-buffer channels, reflector ids, PPR's decoded intermediate buffer, PPR's hole mask, "
+         "reflectors surviving PPR's per-tile culling (heat map)"},
         {"holes", "1", {"0", "1"}, 0, 0, "PPR hole filling from the neighbour with the shortest offset"},
         {"filter", "1", {"0", "1"}, 0, 0, "PPR filtered (bilinear, encoded fractions) colour sample instead of point"},
         {"antibleed", "1", {"0", "1"}, 0, 0, "PPR colour-bleeding reduction (YCoCg, luma and chroma apart)"},
+        {"tiles", "1", {"0", "1"}, 0, 0, "PPR per-tile reflector culling in the projection pass (0: every reflector per pixel)"},
+        {"indirect", "1", {"0", "1"}, 0, 0, "PPR reflection pass dispatched indirectly over reflector tiles (0: whole screen)"},
         {"exposure", "1", {}, 0.01, 100.0, "exposure multiplier before tonemapping"},
         {"shadowres", "2048", {}, 256, 8192, "shadow map resolution (texels per side)"},
     };

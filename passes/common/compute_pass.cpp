@@ -55,6 +55,12 @@ ComputePass& ComputePass::storageWrite(graph::BufferHandle buffer, graph::Buffer
     return *this;
 }
 
+ComputePass& ComputePass::storageReadWrite(graph::BufferHandle buffer, graph::BufferHandle* written) {
+    bind(Kind::StorageBuffer, graph::Access::StorageReadWrite, {}, buffer);
+    bindings_.back().writtenBuffer = written;
+    return *this;
+}
+
 void ComputePass::dispatch(VkExtent2D extent, uint32_t groupSize) { add(extent, groupSize, std::nullopt, 0); }
 
 void ComputePass::dispatchIndirect(graph::BufferHandle args, VkDeviceSize offset) { add({}, 0, args, offset); }
@@ -90,8 +96,9 @@ void ComputePass::add(VkExtent2D extent, uint32_t groupSize, std::optional<graph
                     if (binding.writtenImage) *binding.writtenImage = h;
                     binding.image = h;
                 } else if (binding.kind == Kind::StorageBuffer) {
-                    graph::BufferHandle h = binding.access == graph::Access::StorageRead ? b.storageRead(binding.buffer)
-                                                                                         : b.storageWrite(binding.buffer);
+                    graph::BufferHandle h = binding.access == graph::Access::StorageRead    ? b.storageRead(binding.buffer)
+                                            : binding.access == graph::Access::StorageWrite ? b.storageWrite(binding.buffer)
+                                                                                            : b.storageReadWrite(binding.buffer);
                     if (binding.writtenBuffer) *binding.writtenBuffer = h;
                     binding.buffer = h;
                 }

@@ -33,6 +33,7 @@ public:
     ComputePass& storageReadWrite(graph::ImageHandle image, graph::ImageHandle* written);
     ComputePass& storageRead(graph::BufferHandle buffer);
     ComputePass& storageWrite(graph::BufferHandle buffer, graph::BufferHandle* written);
+    ComputePass& storageReadWrite(graph::BufferHandle buffer, graph::BufferHandle* written);
     template <class T>
     ComputePass& push(const T& constants) {
         pushConstants_.assign(reinterpret_cast<const uint8_t*>(&constants), reinterpret_cast<const uint8_t*>(&constants) + sizeof(T));

@@ -35,5 +35,6 @@ PPR_CONST(uint, kDebugDepth, 5u)
 PPR_CONST(uint, kDebugShadow, 6u)
 PPR_CONST(uint, kDebugIntermediate, 7u)  // PPR: the decoded intermediate buffer
 PPR_CONST(uint, kDebugHoles, 8u)         // PPR: own data / hole-filled / no data per reflector pixel
+PPR_CONST(uint, kDebugTiles, 9u)         // PPR: reflectors surviving per-tile culling, as a heat map
 
 #endif

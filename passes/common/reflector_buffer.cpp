@@ -1,6 +1,7 @@
 #include "common/reflector_buffer.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 namespace ppr::passes {
@@ -14,8 +15,27 @@ ReflectorBuffer::~ReflectorBuffer() {
     }
 }
 
+std::vector<uint32_t> ReflectorBuffer::cullPlanes(const std::vector<scene::Reflector>& rs, const scene::ReflectorGroups& groups) {
+    // Same plane to within what the 2 px culling margin absorbs: identical normal, offsets 10 µm apart.
+    constexpr float kSamePlane = 1e-5f;
+    std::vector<uint32_t> out(rs.size());
+    std::vector<std::vector<uint32_t>> leaders(groups.planeGroupCount);  // per plane group
+    for (uint32_t i = 0; i < rs.size(); ++i) {
+        out[i] = i;
+        for (uint32_t j : leaders[groups.planeGroup[i]]) {
+            if (rs[j].normal == rs[i].normal && std::abs(glm::dot(rs[i].center - rs[j].center, rs[j].normal)) <= kSamePlane) {
+                out[i] = j;
+                break;
+            }
+        }
+        if (out[i] == i) leaders[groups.planeGroup[i]].push_back(i);
+    }
+    return out;
+}
+
 std::vector<gpu::ReflectorData> ReflectorBuffer::pack(const std::vector<scene::Reflector>& rs, const scene::ReflectorGroups& groups) {
     std::vector<gpu::ReflectorData> out(rs.size());
+    const std::vector<uint32_t> planes = cullPlanes(rs, groups);
     for (size_t i = 0; i < rs.size(); ++i) {
         const scene::Reflector& r = rs[i];
         gpu::ReflectorData& d = out[i];
@@ -29,7 +49,8 @@ std::vector<gpu::ReflectorData> ReflectorBuffer::pack(const std::vector<scene::R
         d.orientationGroup = groups.orientationGroup[i];
         d.planeGroup = groups.planeGroup[i];
         d.kind = r.kind == scene::ReflectorKind::Glass ? gpu::kReflectorGlass : gpu::kReflectorOpaque;
-        d.pad0 = d.pad1 = 0;
+        d.cullPlane = planes[i];
+        d.pad1 = 0;
     }
     return out;
 }
@@ -39,6 +60,11 @@ void ReflectorBuffer::update(uint32_t slot, const std::vector<scene::Reflector>&
         groups_ = scene::groupReflectors(rs);
         groupsVersion_ = version;
         count_ = static_cast<uint32_t>(rs.size());
+        projected_ = std::min(count_, gpu::kPprMaxReflectors);
+        // PPR's projection order keeps the first kPprMaxReflectors in scene order, still sorted by orientation.
+        projectionOrder_.clear();
+        for (uint32_t i : groups_.projectionOrder)
+            if (i < projected_) projectionOrder_.push_back(i);
     }
     Slot& s = slots_[slot];
     if (s.version == version) return;
@@ -55,7 +81,7 @@ void ReflectorBuffer::update(uint32_t slot, const std::vector<scene::Reflector>&
     const std::vector<gpu::ReflectorData> data = pack(rs, groups_);
     if (!data.empty()) {
         std::memcpy(s.reflectors.mapped, data.data(), data.size() * sizeof(gpu::ReflectorData));
-        std::memcpy(s.order.mapped, groups_.projectionOrder.data(), groups_.projectionOrder.size() * sizeof(uint32_t));
+        std::memcpy(s.order.mapped, projectionOrder_.data(), projectionOrder_.size() * sizeof(uint32_t));
     }
     vmaFlushAllocation(ctx_.allocator(), s.reflectors.allocation, 0, VK_WHOLE_SIZE);
     vmaFlushAllocation(ctx_.allocator(), s.order.allocation, 0, VK_WHOLE_SIZE);

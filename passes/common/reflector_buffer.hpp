@@ -3,6 +3,7 @@
 // reflector set changes (a version number), never per frame. A slot's copy is rewritten just before
 // that slot records, after its fence, so no frame in flight ever sees a half-written buffer.
 #include "common/reflector_data.h"
+#include "ppr_common/tiles.h"
 #include "scene/reflector.hpp"
 #include "scene/reflector_groups.hpp"
 #include "vk/context.hpp"
@@ -22,10 +23,14 @@ public:
     void update(uint32_t slot, const std::vector<scene::Reflector>& reflectors, uint64_t version);
 
     VkBuffer reflectors(uint32_t slot) const { return slots_[slot].reflectors.buffer; }  // ReflectorData[]
-    VkBuffer order(uint32_t slot) const { return slots_[slot].order.buffer; }            // uint[] projection order
+    VkBuffer order(uint32_t slot) const { return slots_[slot].order.buffer; }            // uint[projected()] projection order
     uint32_t count() const { return count_; }
+    // How many PPR projects: the first kPprMaxReflectors in scene order (the rest are ignored).
+    uint32_t projected() const { return projected_; }
     const scene::ReflectorGroups& groups() const { return groups_; }
 
+    // ReflectorData::cullPlane for every reflector (pure; unit-tested).
+    static std::vector<uint32_t> cullPlanes(const std::vector<scene::Reflector>& reflectors, const scene::ReflectorGroups& groups);
     static std::vector<gpu::ReflectorData> pack(const std::vector<scene::Reflector>& reflectors, const scene::ReflectorGroups& groups);
 
 private:
@@ -39,6 +44,8 @@ private:
     scene::ReflectorGroups groups_;
     uint64_t groupsVersion_ = ~0ull;
     uint32_t count_ = 0;
+    uint32_t projected_ = 0;
+    std::vector<uint32_t> projectionOrder_;
 };
 
 }  // namespace ppr::passes

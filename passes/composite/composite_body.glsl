@@ -53,7 +53,7 @@ void main() {
         if (id != 0u) c = mix(c, idColor(id), 0.6);
     }
 #ifdef PPR_COMPOSITE_REFLECTION
-    else if (view == kDebugIntermediate || view == kDebugHoles) {
+    else if (view == kDebugIntermediate || view == kDebugHoles || view == kDebugTiles) {
         // Drawn by the PPR reflection pass (alpha marks what it drew); the scene is dimmed around it.
         c = mix(c * 0.25 * frame.lightColor.w, reflection.rgb, reflection.a);
     }

@@ -3,16 +3,47 @@
 #include "common/bindings.glsl"
 #include "common/reflector_data.h"
 #include "ppr_common/encoding.h"
+#include "ppr_common/tile_culling.h"
+#include "ppr_common/tiles.h"
 #include "ppr_project/ppr_project.h"
 
 // PPR step 2, the projection pass: every pixel finds the reflectors that reflect it and scatters its
 // screen-space offset to where it appears in them, keeping the closest with imageAtomicMin.
-layout(local_size_x = kPprProjectGroupSize, local_size_y = kPprProjectGroupSize) in;
+// One workgroup per screen tile. With culling on, the workgroup first reduces the tile's world-space
+// bounds, tests every reflector against them in parallel (ppr_common/tile_culling.h) and keeps, in
+// shared memory and in projection order, the survivors and the possible occluders; each pixel then
+// runs the per-reflector logic over those lists only. With culling off the lists are all reflectors.
+layout(local_size_x = kPprTileSize, local_size_y = kPprTileSize) in;
 layout(set = 0, binding = 1) uniform sampler2D depthTex;
 layout(set = 0, binding = 2, scalar) readonly buffer Reflectors { ReflectorData reflectors[]; };
 layout(set = 0, binding = 3, scalar) readonly buffer Order { uint projectionOrder[]; };
 layout(set = 0, binding = 4, r32ui) uniform uimage2D intermediate;
+layout(set = 0, binding = 5, scalar) readonly buffer Bounds { PprReflectorBounds bounds[]; };
+layout(set = 0, binding = 6, scalar) writeonly buffer TileSurvivors { uint tileSurvivors[]; };
+layout(set = 0, binding = 7, scalar) buffer Stats { PprFrameStats stats; };
 layout(push_constant, scalar) uniform Push { PprProjectPush pc; };
+
+const uint kThreads = kPprTileSize * kPprTileSize;
+
+// Tile bounds as order-preserving uints so that atomicMin/Max reduce floats.
+shared uint boxLo[3], boxHi[3];
+shared uvec2 planeRect[kPprMaxReflectors];          // per cull plane (indexed by its first reflector)
+shared uint survivorWords[kPprMaxReflectors / 2u];  // 16-bit reflector indices, in projection order
+shared uint occluderWords[kPprMaxReflectors / 2u];  // 16-bit reflector indices, in any order
+shared uint chunkMask[kThreads / 32u];
+shared uint survivorCount, occluderCount;
+shared uint tileHasContent;
+shared uint reachLoX, reachLoY, reachHiX, reachHiY;  // pixels the survivors can write to
+
+uint orderedFromFloat(float f) {
+    uint u = floatBitsToUint(f);
+    return (u & 0x80000000u) != 0u ? ~u : u | 0x80000000u;
+}
+float floatFromOrdered(uint u) { return uintBitsToFloat((u & 0x80000000u) != 0u ? u & 0x7FFFFFFFu : ~u); }
+
+uint unpack16(uint word, uint slot) { return (word >> (16u * (slot & 1u))) & 0xFFFFu; }
+uint survivorAt(uint k) { return pc.cullTiles == 0u ? projectionOrder[k] : unpack16(survivorWords[k >> 1u], k); }
+uint occluderAt(uint k) { return pc.cullTiles == 0u ? k : unpack16(occluderWords[k >> 1u], k); }
 
 bool insideRectangle(ReflectorData r, vec3 p) {
     vec3 l = p - r.center;
@@ -20,10 +51,13 @@ bool insideRectangle(ReflectorData r, vec3 p) {
 }
 
 // Occluding shapes: does the segment eye → hit cross another reflector's rectangle first? Coplanar
-// neighbours meet the segment at its end and do not count.
-bool occludedByOtherReflector(vec3 eye, vec3 hit, uint self) {
+// neighbours meet the segment at its end and do not count. Only a reflector whose screen rectangle
+// holds the written pixel can cross that segment (it projects to that one point), so the tile's
+// occluder list is enough.
+bool occludedByOtherReflector(vec3 eye, vec3 hit, uint self, uint candidates) {
     vec3 d = hit - eye;
-    for (uint j = 0u; j < pc.reflectorCount; ++j) {
+    for (uint k = 0u; k < candidates; ++k) {
+        uint j = occluderAt(k);
         if (j == self) continue;
         ReflectorData o = reflectors[j];
         float denom = dot(d, o.normal);
@@ -45,13 +79,115 @@ void writeOffset(ivec2 pix, vec3 mirrored) {
     imageAtomicMin(intermediate, ivec2(target), value);
 }
 
+// Builds this tile's survivor and occluder lists. Called by every thread (uniform control flow).
+void cullReflectors(vec3 lo, vec3 hi) {
+    uint lid = gl_LocalInvocationIndex;
+    // Mirrored tile bounds once per cull plane.
+    for (uint base = 0u; base < pc.reflectorCount; base += kThreads) {
+        uint i = base + lid;
+        if (i < pc.reflectorCount && reflectors[i].cullPlane == i)
+            planeRect[i] = pprTileReflectedRect(lo, hi, reflectors[i].normal, reflectors[i].center, frame.viewProj, frame.screenSize);
+    }
+    barrier();
+    // Survivors in projection order: a chunk's verdicts go into a bit mask, and each survivor's rank
+    // is the number of survivors before it, so the list never depends on thread timing.
+    for (uint base = 0u; base < pc.reflectorCount; base += kThreads) {
+        if (lid < kThreads / 32u) chunkMask[lid] = 0u;
+        barrier();
+        uint k = base + lid;
+        bool survives = false;
+        uint i = 0u;
+        if (k < pc.reflectorCount) {
+            i = projectionOrder[k];
+            PprReflectorBounds b = bounds[i];
+            uvec2 mirrored = planeRect[reflectors[i].cullPlane];
+            survives = b.reflects != 0u && pprRectsOverlap(mirrored, b.rect);
+            if (survives) {
+                // It can only write where both rectangles overlap.
+                atomicMin(reachLoX, max(mirrored.x & 0xFFFFu, b.rect.x & 0xFFFFu));
+                atomicMin(reachLoY, max(mirrored.x >> 16u, b.rect.x >> 16u));
+                atomicMax(reachHiX, min(mirrored.y & 0xFFFFu, b.rect.y & 0xFFFFu));
+                atomicMax(reachHiY, min(mirrored.y >> 16u, b.rect.y >> 16u));
+                atomicOr(chunkMask[lid >> 5u], 1u << (lid & 31u));
+            }
+        }
+        barrier();
+        uint rank = survivorCount + bitCount(chunkMask[lid >> 5u] & ((1u << (lid & 31u)) - 1u));
+        uint total = 0u;
+        for (uint w = 0u; w < kThreads / 32u; ++w) {
+            uint n = bitCount(chunkMask[w]);
+            if (w < (lid >> 5u)) rank += n;
+            total += n;
+        }
+        if (survives) atomicOr(survivorWords[rank >> 1u], i << (16u * (rank & 1u)));
+        barrier();
+        if (lid == 0u) survivorCount += total;
+    }
+    barrier();
+    // Possible occluders: every reflector (either side facing) whose screen rectangle meets the
+    // pixels the survivors can write to.
+    uvec2 reach = uvec2(reachLoX | (reachLoY << 16u), reachHiX | (reachHiY << 16u));
+    for (uint base = 0u; base < pc.reflectorCount; base += kThreads) {
+        uint j = base + lid;
+        if (j < pc.reflectorCount && survivorCount > 0u && pprRectsOverlap(bounds[j].rect, reach)) {
+            uint slot = atomicAdd(occluderCount, 1u);
+            atomicOr(occluderWords[slot >> 1u], j << (16u * (slot & 1u)));
+        }
+    }
+    barrier();
+}
+
 void main() {
+    uint lid = gl_LocalInvocationIndex;
+    if (lid == 0u) {
+        for (int a = 0; a < 3; ++a) {
+            boxLo[a] = 0xFFFFFFFFu;
+            boxHi[a] = 0u;
+        }
+        survivorCount = 0u;
+        occluderCount = 0u;
+        tileHasContent = 0u;
+        reachLoX = reachLoY = 0xFFFFu;
+        reachHiX = reachHiY = 0u;
+    }
+    if (pc.cullTiles != 0u)
+        for (uint w = lid; w < kPprMaxReflectors / 2u; w += kThreads) survivorWords[w] = occluderWords[w] = 0u;
+    barrier();
+
     ivec2 pix = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(pix, ivec2(frame.screenSize)))) return;
-    float depth = texelFetch(depthTex, pix, 0).r;
-    if (depth <= 0.0) return;  // sky: no position to mirror
+    bool valid = all(lessThan(pix, ivec2(frame.screenSize)));
+    float depth = valid ? texelFetch(depthTex, pix, 0).r : 0.0;
+    valid = valid && depth > 0.0;  // sky: no position to mirror
+    vec3 p = valid ? worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depth) : vec3(0.0);
+    if (valid) atomicOr(tileHasContent, 1u);
+    if (valid && pc.cullTiles != 0u) {
+        for (int a = 0; a < 3; ++a) {
+            atomicMin(boxLo[a], orderedFromFloat(p[a]));
+            atomicMax(boxHi[a], orderedFromFloat(p[a]));
+        }
+    }
+    barrier();
+
+    bool hasContent = tileHasContent != 0u;  // the same in every thread
+    uint candidates = hasContent ? pc.reflectorCount : 0u, occluders = candidates;
+    if (pc.cullTiles != 0u) {
+        if (hasContent) {
+            cullReflectors(vec3(floatFromOrdered(boxLo[0]), floatFromOrdered(boxLo[1]), floatFromOrdered(boxLo[2])),
+                           vec3(floatFromOrdered(boxHi[0]), floatFromOrdered(boxHi[1]), floatFromOrdered(boxHi[2])));
+        }
+        candidates = survivorCount;
+        occluders = occluderCount;
+    }
+    if (lid == 0u) {
+        tileSurvivors[gl_WorkGroupID.y * pc.tilesX + gl_WorkGroupID.x] = candidates;
+        if (hasContent) atomicAdd(stats.tilesWithContent, 1u);
+        atomicAdd(stats.reflectorTilePairs, candidates);
+        atomicAdd(stats.occluderTilePairs, occluders);
+        atomicMax(stats.maxTileSurvivors, candidates);
+    }
+    if (!valid) return;
+
     vec3 eye = frame.cameraPos.xyz;
-    vec3 p = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depth);
     float above = kPprAboveEpsilon + kPprAboveEpsilonPerMetre * distance(eye, p);
 
     // Reflectors arrive sorted by orientation. Within one orientation only the shape nearest to the
@@ -61,16 +197,16 @@ void main() {
     uint best = 0xFFFFFFFFu;
     float bestDistance = 0.0;
     vec3 bestMirrored = vec3(0.0), bestHit = vec3(0.0);
-    for (uint k = 0u; k <= pc.reflectorCount; ++k) {
-        uint i = k < pc.reflectorCount ? projectionOrder[k] : 0u;
-        uint g = k < pc.reflectorCount ? reflectors[i].orientationGroup : 0xFFFFFFFEu;
+    for (uint k = 0u; k <= candidates; ++k) {
+        uint i = k < candidates ? survivorAt(k) : 0u;
+        uint g = k < candidates ? reflectors[i].orientationGroup : 0xFFFFFFFEu;
         if (g != group) {
-            if (best != 0xFFFFFFFFu && !occludedByOtherReflector(eye, bestHit, best)) writeOffset(pix, bestMirrored);
+            if (best != 0xFFFFFFFFu && !occludedByOtherReflector(eye, bestHit, best, occluders)) writeOffset(pix, bestMirrored);
             group = g;
             best = 0xFFFFFFFFu;
             bestDistance = 3.4e38;
         }
-        if (k == pc.reflectorCount) break;
+        if (k == candidates) break;
         ReflectorData r = reflectors[i];
         float d = dot(p - r.center, r.normal);
         if (d <= above || d >= bestDistance) continue;  // not above this plane, or a nearer parallel shape won

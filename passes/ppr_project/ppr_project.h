@@ -3,7 +3,6 @@
 #define PPR_PROJECT_H
 #include "shader/shared.h"
 
-PPR_CONST(uint, kPprProjectGroupSize, 8u)
 // A pixel counts as above a reflector's plane only beyond this (metres, plus a fraction of its
 // distance to the camera for depth-reconstruction error), so the reflector surface never reflects itself.
 PPR_CONST(float, kPprAboveEpsilon, 1e-3f)
@@ -11,10 +10,10 @@ PPR_CONST(float, kPprAboveEpsilonPerMetre, 1e-4f)
 
 PPR_BEGIN
 struct PprProjectPush {
-    uint reflectorCount;
+    uint reflectorCount;  // ≤ kPprMaxReflectors (ppr_common/tiles.h)
+    uint cullTiles;       // 1: per-tile reflector culling (--set tiles=1); 0: every reflector per pixel
+    uint tilesX;          // tiles per row: index of the per-tile survivor count
     uint pad0;
-    uint pad1;
-    uint pad2;
 };
 PPR_END
 PPR_SIZE_CHECK(PprProjectPush, 16);

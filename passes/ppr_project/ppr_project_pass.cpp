@@ -1,6 +1,7 @@
 #include "ppr_project/ppr_project_pass.hpp"
 
 #include "common/compute_pass.hpp"
+#include "ppr_common/tiles.h"
 #include "ppr_project/ppr_project.h"
 #include "ppr_project_comp.h"
 
@@ -9,24 +10,31 @@ namespace ppr::passes {
 PprProjectPass::PprProjectPass(const vk::Context& ctx) : ctx_(ctx) {
     shader::PipelineLayoutDesc layout;
     layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                           VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
+                           VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,          VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                           VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
     layout.pushConstantBytes = sizeof(gpu::PprProjectPush);
     pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(ppr_project_comp), layout, "ppr.project");
 }
 
-graph::ImageHandle PprProjectPass::add(graph::RenderGraph& g, const FrameInputs& in, graph::ImageHandle depth, const ReflectorBinding& r,
-                                       graph::ImageHandle intermediate) const {
+PprProjectOutputs PprProjectPass::add(graph::RenderGraph& g, const FrameInputs& in, const ReflectorBinding& r,
+                                      const PprProjectInputs& inputs) const {
     gpu::PprProjectPush push{};
     push.reflectorCount = r.count;
-    graph::ImageHandle out;
+    push.cullTiles = inputs.cullTiles ? 1u : 0u;
+    push.tilesX = inputs.tilesX;
+    PprProjectOutputs out;
+    graph::BufferHandle survivors = g.createBuffer("ppr.tile_survivors", {sizeof(uint32_t) * inputs.tilesX * inputs.tilesY});
     ComputePass(g, ctx_, "ppr.project", pipeline_)
         .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
-        .sampled(depth, in.samplers->nearestClamp)
+        .sampled(inputs.depth, in.samplers->nearestClamp)
         .hostStorage(r.reflectors)
         .hostStorage(r.order)
-        .storageReadWrite(intermediate, &out)
+        .storageReadWrite(inputs.intermediate, &out.intermediate)
+        .storageRead(inputs.bounds)
+        .storageWrite(survivors, &out.tileSurvivors)
+        .storageReadWrite(inputs.stats, &out.stats)
         .push(push)
-        .dispatch(in.extent, gpu::kPprProjectGroupSize);
+        .dispatch(in.extent, gpu::kPprTileSize);
     return out;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-// PPR projection pass (ppr_project.comp): scatters every pixel's offset into the intermediate buffer.
+// PPR projection pass (ppr_project.comp): scatters every pixel's offset into the intermediate buffer,
+// one workgroup per screen tile, with optional per-tile reflector culling.
 #include "common/frame_inputs.hpp"
 #include "graph/graph.hpp"
 
@@ -8,15 +9,28 @@ namespace ppr::passes {
 struct ReflectorBinding {  // the reflector buffers of the frame's slot (common/reflector_buffer.hpp)
     VkBuffer reflectors = VK_NULL_HANDLE;
     VkBuffer order = VK_NULL_HANDLE;
-    uint32_t count = 0;
+    uint32_t count = 0;  // reflectors projected (≤ kPprMaxReflectors)
+};
+
+struct PprProjectInputs {
+    graph::ImageHandle depth;
+    graph::ImageHandle intermediate;  // cleared
+    graph::BufferHandle bounds;       // ppr.bounds output
+    graph::BufferHandle stats;        // PprFrameStats (counters added to)
+    uint32_t tilesX = 0, tilesY = 0;
+    bool cullTiles = true;            // --set tiles
+};
+
+struct PprProjectOutputs {
+    graph::ImageHandle intermediate;
+    graph::BufferHandle tileSurvivors;  // uint per tile: reflectors surviving culling (debug=tiles)
+    graph::BufferHandle stats;
 };
 
 class PprProjectPass {
 public:
     explicit PprProjectPass(const vk::Context& ctx);
-    // Returns the intermediate buffer's new version.
-    graph::ImageHandle add(graph::RenderGraph& g, const FrameInputs& in, graph::ImageHandle depth, const ReflectorBinding& reflectors,
-                           graph::ImageHandle intermediate) const;
+    PprProjectOutputs add(graph::RenderGraph& g, const FrameInputs& in, const ReflectorBinding& reflectors, const PprProjectInputs& inputs) const;
 
 private:
     const vk::Context& ctx_;

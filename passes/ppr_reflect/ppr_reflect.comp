@@ -3,17 +3,22 @@
 #include "common/bindings.glsl"
 #include "common/reflection.h"
 #include "ppr_common/encoding.h"
+#include "ppr_common/tiles.h"
 #include "ppr_reflect/ppr_reflect.h"
 
 // PPR step 3, the reflection pass: decode the offset stored at each reflector pixel, patch holes from
 // the neighbour with the shortest offset, sample the lit scene filtered and unfiltered, and reduce
 // the colour bleeding of the filtered sample. Writes the reflection image (common/reflection.h).
-layout(local_size_x = kPprReflectGroupSize, local_size_y = kPprReflectGroupSize) in;
+// Dispatched over the whole screen or, indirectly, over the tiles that hold reflector pixels (the
+// image is cleared first).
+layout(local_size_x = kPprTileSize, local_size_y = kPprTileSize) in;
 layout(set = 0, binding = 1, r32ui) uniform readonly uimage2D intermediate;
 layout(set = 0, binding = 2) uniform sampler2D sceneLinear;  // the same image twice:
 layout(set = 0, binding = 3) uniform sampler2D scenePoint;   // bilinear and point sampled
 layout(set = 0, binding = 4) uniform usampler2D reflectorTex;
 layout(set = 0, binding = 5, rgba16f) uniform writeonly image2D outReflection;
+layout(set = 0, binding = 6, scalar) readonly buffer TileList { uint planarTiles[]; };  // class kTileClassPlanar first
+layout(set = 0, binding = 7, scalar) readonly buffer TileSurvivors { uint tileSurvivors[]; };
 layout(push_constant, scalar) uniform Push { PprReflectPush pc; };
 
 uint fetchValue(ivec2 p) {
@@ -45,11 +50,29 @@ vec3 reduceColorBleeding(vec3 filtered, vec3 unfiltered) {
 
 vec3 hue(float angle) { return clamp(abs(fract(angle + vec3(0.0, 2.0 / 3.0, 1.0 / 3.0)) * 6.0 - 3.0) - 1.0, 0.0, 1.0); }
 
+// Heat map of reflectors surviving per-tile culling: blue (1) → green → yellow → red (64 and more).
+vec4 tileHeat(uvec2 tile, ivec2 pix) {
+    uint n = tileSurvivors[tile.y * pc.tilesX + tile.x];
+    if (n == 0u) return vec4(0.0);
+    float t = clamp(log2(float(n)) / 6.0, 0.0, 1.0);
+    vec3 c = t < 0.5 ? mix(vec3(0.1, 0.3, 1.0), vec3(0.1, 0.9, 0.2), t * 2.0) : mix(vec3(1.0, 0.9, 0.1), vec3(1.0, 0.1, 0.05), t * 2.0 - 1.0);
+    bool border = any(equal(pix % ivec2(kPprTileSize), ivec2(0)));
+    return vec4(border ? c * 0.5 : c, 0.6);
+}
+
 void main() {
     ivec2 pix = ivec2(gl_GlobalInvocationID.xy);
+    if ((pc.flags & kPprIndirect) != 0u)
+        pix = ivec2(pprUnpackTile(planarTiles[gl_WorkGroupID.x]) * kPprTileSize + gl_LocalInvocationID.xy);
     if (any(greaterThanEqual(pix, ivec2(frame.screenSize)))) return;
-    bool onReflector = texelFetch(reflectorTex, pix, 0).r != 0u;
+    uint id = texelFetch(reflectorTex, pix, 0).r;
+    bool onReflector = id != 0u && id <= pc.maxReflectorId;
     uint v0 = fetchValue(pix);
+
+    if (pc.debugView == kDebugTiles) {
+        imageStore(outReflection, pix, tileHeat(uvec2(pix) / kPprTileSize, pix));
+        return;
+    }
 
     if (pc.debugView == kDebugIntermediate) {
         // The raw intermediate buffer: hue = offset direction, brightness = length (full at 256 px).

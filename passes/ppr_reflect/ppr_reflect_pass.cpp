@@ -1,6 +1,9 @@
 #include "ppr_reflect/ppr_reflect_pass.hpp"
 
+#include "common/clear_pass.hpp"
 #include "common/compute_pass.hpp"
+#include "common/frame.h"
+#include "ppr_common/tiles.h"
 #include "ppr_reflect/ppr_reflect.h"
 #include "ppr_reflect_comp.h"
 
@@ -10,27 +13,41 @@ PprReflectPass::PprReflectPass(const vk::Context& ctx) : ctx_(ctx) {
     shader::PipelineLayoutDesc layout;
     layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,         VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
                            VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                           VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
+                           VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+                           VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,         VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
     layout.pushConstantBytes = sizeof(gpu::PprReflectPush);
     pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(ppr_reflect_comp), layout, "ppr.reflect");
 }
 
-graph::ImageHandle PprReflectPass::add(graph::RenderGraph& g, const FrameInputs& in, graph::ImageHandle intermediate,
-                                       graph::ImageHandle sceneColor, graph::ImageHandle reflectorIds, uint32_t flags,
-                                       uint32_t debugView) const {
+graph::ImageHandle PprReflectPass::add(graph::RenderGraph& g, const FrameInputs& in, const PprReflectInputs& inputs) const {
     gpu::PprReflectPush push{};
-    push.flags = flags;
-    push.debugView = debugView;
+    push.flags = inputs.flags;
+    push.debugView = inputs.debugView;
+    push.tilesX = inputs.tiles->tilesX;
+    push.maxReflectorId = inputs.maxReflectorId;
+    // The debug views that draw outside reflector pixels need the whole screen.
+    if (inputs.debugView == gpu::kDebugIntermediate || inputs.debugView == gpu::kDebugTiles) push.flags &= ~gpu::kPprIndirect;
+    const bool indirect = (push.flags & gpu::kPprIndirect) != 0;
+
+    graph::ImageHandle target = g.createImage("reflection", {in.extent.width, in.extent.height, kReflectionFormat, 1});
+    // Tiles left out of the indirect dispatch hold no reflector pixel: "no reflection" (all zero),
+    // exactly what the whole-screen dispatch writes there.
+    if (indirect) target = addClearPass(g, "ppr.reflection.clear", target, VkClearColorValue{});
     graph::ImageHandle out;
-    ComputePass(g, ctx_, "ppr.reflect", pipeline_)
-        .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
-        .storageRead(intermediate)
-        .sampled(sceneColor, in.samplers->linearClamp)
-        .sampled(sceneColor, in.samplers->nearestClamp)
-        .sampled(reflectorIds, in.samplers->nearestClamp)
-        .storageWrite(g.createImage("reflection", {in.extent.width, in.extent.height, kReflectionFormat, 1}), &out)
-        .push(push)
-        .dispatch(in.extent, gpu::kPprReflectGroupSize);
+    ComputePass pass(g, ctx_, "ppr.reflect", pipeline_);
+    pass.uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
+        .storageRead(inputs.intermediate)
+        .sampled(inputs.sceneColor, in.samplers->linearClamp)
+        .sampled(inputs.sceneColor, in.samplers->nearestClamp)
+        .sampled(inputs.reflectorIds, in.samplers->nearestClamp);
+    // Indirect: only some tiles are written, the cleared rest is kept.
+    if (indirect) pass.storageReadWrite(target, &out);
+    else pass.storageWrite(target, &out);
+    pass.storageRead(inputs.tiles->lists)
+        .storageRead(inputs.tileSurvivors)
+        .push(push);
+    if (indirect) pass.dispatchIndirect(inputs.tiles->args, sizeof(gpu::TileDispatchArgs) * gpu::kTileClassPlanar);
+    else pass.dispatch(in.extent, gpu::kPprTileSize);
     return out;
 }
 

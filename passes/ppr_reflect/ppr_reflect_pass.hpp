@@ -2,16 +2,27 @@
 // PPR reflection pass (ppr_reflect.comp): intermediate buffer + lit scene → reflection image.
 #include "common/frame_inputs.hpp"
 #include "graph/graph.hpp"
+#include "tile_classify/tile_classify_pass.hpp"
 
 namespace ppr::passes {
+
+struct PprReflectInputs {
+    graph::ImageHandle intermediate;
+    graph::ImageHandle sceneColor;
+    graph::ImageHandle reflectorIds;
+    graph::BufferHandle tileSurvivors;  // ppr.project's per-tile counts (debug=tiles)
+    const TileLists* tiles = nullptr;
+    uint32_t flags = 0;           // ppr_reflect.h kPpr* toggles; kPprIndirect dispatches over the planar tiles
+    uint32_t debugView = 0;       // frame.h kDebug* (intermediate, holes and tiles draw here)
+    uint32_t maxReflectorId = 0;  // ids above this get no reflection (beyond PPR's budget)
+};
 
 class PprReflectPass {
 public:
     static constexpr VkFormat kReflectionFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
     explicit PprReflectPass(const vk::Context& ctx);
-    // flags: ppr_reflect.h kPpr* toggles; debugView: frame.h kDebug* (intermediate / holes draw here).
-    graph::ImageHandle add(graph::RenderGraph& g, const FrameInputs& in, graph::ImageHandle intermediate, graph::ImageHandle sceneColor,
-                           graph::ImageHandle reflectorIds, uint32_t flags, uint32_t debugView) const;
+    // Whole-screen debug views ignore kPprIndirect.
+    graph::ImageHandle add(graph::RenderGraph& g, const FrameInputs& in, const PprReflectInputs& inputs) const;
 
 private:
     const vk::Context& ctx_;

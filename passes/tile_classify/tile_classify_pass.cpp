@@ -1,0 +1,79 @@
+#include "tile_classify/tile_classify_pass.hpp"
+
+#include "common/compute_pass.hpp"
+#include "ppr_common/tiles.h"
+#include "tile_classify/tile_classify.h"
+#include "tile_classify_comp.h"
+
+#include <array>
+#include <cstddef>
+
+namespace ppr::passes {
+
+TileClassifyPass::TileClassifyPass(const vk::Context& ctx) : ctx_(ctx) {
+    shader::PipelineLayoutDesc layout;
+    layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                           VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                           VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
+    layout.pushConstantBytes = sizeof(gpu::TileClassifyPush);
+    pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(tile_classify_comp), layout, "ppr.classify");
+}
+
+TileLists TileClassifyPass::add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::BufferHandle stats,
+                                uint32_t maxReflectorId) const {
+    TileLists t;
+    t.tilesX = (in.extent.width + gpu::kPprTileSize - 1) / gpu::kPprTileSize;
+    t.tilesY = (in.extent.height + gpu::kPprTileSize - 1) / gpu::kPprTileSize;
+    graph::BufferHandle args = g.createBuffer("ppr.tile_args", {sizeof(gpu::TileDispatchArgs) * gpu::kTileClassCount});
+    graph::BufferHandle lists = g.createBuffer("ppr.tile_lists", {sizeof(uint32_t) * gpu::kTileClassCount * t.tileCount()});
+
+    // Empty lists (x = 0, y = z = 1) and zero counters; vkCmdUpdateBuffer/FillBuffer are transfer commands.
+    struct Clear {
+        graph::BufferHandle args, stats;
+    };
+    const Clear& cleared = g.addPass<Clear>(
+        "ppr.tiles.clear", graph::QueueKind::Transfer,
+        [&](graph::PassBuilder& b, Clear& d) {
+            d.args = b.transferDst(args);
+            d.stats = b.transferDst(stats);
+        },
+        [](const Clear& d, graph::PassContext& pc) {
+            std::array<gpu::TileDispatchArgs, gpu::kTileClassCount> empty{};
+            for (gpu::TileDispatchArgs& a : empty) a = {0u, 1u, 1u};
+            vkCmdUpdateBuffer(pc.cmd(), pc.buffer(d.args), 0, sizeof(empty), empty.data());
+            vkCmdFillBuffer(pc.cmd(), pc.buffer(d.stats), 0, VK_WHOLE_SIZE, 0u);
+        });
+    const graph::BufferHandle clearedArgs = cleared.args, clearedStats = cleared.stats;
+
+    gpu::TileClassifyPush push{};
+    push.tilesX = t.tilesX;
+    push.tileCount = t.tileCount();
+    push.maxReflectorId = maxReflectorId;
+    ComputePass(g, ctx_, "ppr.classify", pipeline_)
+        .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
+        .sampled(gb.reflector, in.samplers->nearestClamp)
+        .sampled(gb.material, in.samplers->nearestClamp)
+        .storageReadWrite(clearedArgs, &t.args)
+        .storageWrite(lists, &t.lists)
+        .push(push)
+        .dispatch(in.extent, gpu::kPprTileSize);
+
+    // The arguments as the dispatches will read them, into the host-visible stats.
+    struct Count {
+        graph::BufferHandle args, stats;
+    };
+    const Count& counted = g.addPass<Count>(
+        "ppr.tiles.count", graph::QueueKind::Transfer,
+        [&](graph::PassBuilder& b, Count& d) {
+            d.args = b.transferSrc(t.args);
+            d.stats = b.transferDst(clearedStats);
+        },
+        [](const Count& d, graph::PassContext& pc) {
+            const VkBufferCopy region{0, offsetof(gpu::PprFrameStats, dispatch), sizeof(gpu::PprFrameStats::dispatch)};
+            vkCmdCopyBuffer(pc.cmd(), pc.buffer(d.args), pc.buffer(d.stats), 1, &region);
+        });
+    t.stats = counted.stats;
+    return t;
+}
+
+}  // namespace ppr::passes

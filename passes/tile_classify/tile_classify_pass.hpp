@@ -1,0 +1,31 @@
+#pragma once
+// Tile classification (tile_classify.comp): per-class tile lists and their indirect dispatch
+// arguments, all graph buffers, plus the frame's tile counts in the stats buffer.
+#include "common/frame_inputs.hpp"
+#include "gbuffer/gbuffer_pass.hpp"
+#include "graph/graph.hpp"
+
+namespace ppr::passes {
+
+struct TileLists {
+    graph::BufferHandle args;   // TileDispatchArgs[kTileClassCount] (ppr_common/tiles.h)
+    graph::BufferHandle lists;  // uint[kTileClassCount * tileCount]: class c's list from c * tileCount
+    graph::BufferHandle stats;  // PprFrameStats, new version
+    uint32_t tilesX = 0, tilesY = 0;
+    uint32_t tileCount() const { return tilesX * tilesY; }
+};
+
+class TileClassifyPass {
+public:
+    explicit TileClassifyPass(const vk::Context& ctx);
+    // Clears the arguments and `stats` ("ppr.tiles.clear", transfer), classifies ("ppr.classify") and
+    // copies the arguments into `stats` ("ppr.tiles.count").
+    // Reflector ids above maxReflectorId do not make a tile planar (beyond PPR's budget).
+    TileLists add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::BufferHandle stats, uint32_t maxReflectorId) const;
+
+private:
+    const vk::Context& ctx_;
+    shader::Pipeline pipeline_;
+};
+
+}  // namespace ppr::passes
