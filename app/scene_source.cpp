@@ -1,6 +1,9 @@
 #include "scene_source.hpp"
 
+#include "scene/stress_scene.hpp"
+
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 
 namespace ppr::app {
@@ -17,6 +20,17 @@ std::string defaultScenePath() {
 }
 
 scene::Scene loadScene(const Options& o) {
+    if (std::optional<uint32_t> tiles = scene::parseStressSpec(o.scene)) {
+        scene::Scene s = scene::makeStressScene(*tiles);
+        if (!o.reflectors.empty()) {
+            // As for glTF: an explicit file replaces the scene's reflectors; tiles rebind by name
+            // ("tile_<i>") or by lying inside a reflector rectangle.
+            s.reflectors = scene::loadReflectorFile(o.reflectors);
+            for (scene::DrawItem& d : s.draws) d.reflector = -1;
+            scene::bindDrawsToReflectors(s);
+        }
+        return s;
+    }
     scene::LoadOptions lo;
     lo.reflectorFile = o.reflectors;
     return scene::loadGltf(o.scene.empty() ? defaultScenePath() : o.scene, lo);
