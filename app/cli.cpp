@@ -23,20 +23,28 @@ uint32_t parseUnsigned(const std::string& option, const std::string& text, uint3
 
 }  // namespace
 
+const std::vector<std::string>& benchSweepNames() {
+    static const std::vector<std::string> names = {"techniques", "reflectors", "coverage"};
+    return names;
+}
+
 std::string usage() {
     return "usage: ppr [view|capture|compare|bench] [options]\n"
            "  view                 interactive window (default when a display is present)\n"
            "  capture              render headless, write final.png + report.json (default without a display)\n"
            "  compare              render techniques and the planar ground truth; write contact.png + metrics.json\n"
+           "  bench                time techniques and PPR's scaling sweeps; write bench.json, bench.md, bench.png\n"
            "options:\n"
-           "  --scene FILE         .gltf or .glb (default: the built-in default scene)\n"
+           "  --scene FILE         .gltf or .glb, or stress:N (N = 1..4096 mirror tiles; default: the built-in default scene)\n"
            "  --reflectors FILE    reflector JSON (default: <scene>.reflectors.json or glTF node extras)\n"
            "  --camera NAME|x,y,z,yawDeg,pitchDeg[,fovYDeg]\n"
            "                       capture: default = every named camera; view: the first one\n"
            "  --size WxH           default 1280x720 (16..8192 per side; ppr: at most 4096, its offsets are 12-bit)\n"
            "  --technique T        ppr (default) | planar (ground truth) | none; compare: repeatable\n"
-           "  --set key=value      repeatable; keys: debug, exposure, shadowres, holes, filter, antibleed\n"
-           "  --frames N           frames to render (capture default 5: median GPU times over them)\n"
+           "  --set key=value      repeatable; keys: debug, exposure, shadowres, holes, filter, antibleed, tiles, indirect\n"
+           "  --frames N           frames to render (capture default 5: median GPU times over them; bench default 10)\n"
+           "  --warmup N           bench: frames rendered before measuring (default 3)\n"
+           "  --sweep S            bench, repeatable: techniques | reflectors | coverage (default: all three)\n"
            "  --out DIR            output directory (default out)\n"
            "  --validation         Khronos validation + synchronization validation; any error exits 1\n"
            "                       (also enabled by PPR_VALIDATION=1)\n"
@@ -69,6 +77,14 @@ Options parseCommandLine(int argc, const char* const* argv) {
         else if (a == "--validation") o.validation = true;
         else if (a == "--dump-graph") o.dumpGraph = true;
         else if (a == "--frames") o.frames = parseUnsigned(a, value(a), 1, kMaxFrames);
+        else if (a == "--warmup") o.warmup = parseUnsigned(a, value(a), 0, kMaxFrames);
+        else if (a == "--sweep") {
+            const std::string sweep = value(a);
+            const auto& names = benchSweepNames();
+            if (std::find(names.begin(), names.end(), sweep) == names.end())
+                throw std::runtime_error("--sweep " + sweep + ": expected techniques, reflectors or coverage");
+            o.sweeps.push_back(sweep);
+        }
         else if (a == "--technique") {
             o.technique = value(a);
             if (!isTechnique(o.technique)) {
@@ -91,8 +107,7 @@ Options parseCommandLine(int argc, const char* const* argv) {
             throw std::runtime_error("unknown option '" + a + "' (see ppr --help)");
         }
     }
-    if (o.mode == Mode::Bench)
-        throw std::runtime_error("bench: not in this build yet (available commands: view, capture, compare)");
+    if (o.mode == Mode::Bench && o.sweeps.empty()) o.sweeps = benchSweepNames();
     if (o.mode == Mode::Compare && o.techniques.empty()) o.techniques = {"ppr"};
     const bool usesPpr = o.mode == Mode::Compare ? std::find(o.techniques.begin(), o.techniques.end(), "ppr") != o.techniques.end()
                                                  : o.technique == "ppr";

@@ -27,7 +27,14 @@ struct Options {
     bool validation = false;
     bool dumpGraph = false;  // --dump-graph: write graph.dot next to the report
     bool help = false;
+    // bench: which measurements (techniques, reflectors, coverage; empty = all) and frames left out
+    // of the medians first.
+    std::vector<std::string> sweeps;
+    uint32_t warmup = 3;
 };
+
+// `ppr bench --sweep` names.
+const std::vector<std::string>& benchSweepNames();
 
 constexpr uint32_t kMinSize = 16;
 constexpr uint32_t kMaxSize = 8192;

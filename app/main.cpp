@@ -1,4 +1,5 @@
 // ppr: pixel-projected reflections sample. See README.md and `ppr --help`.
+#include "bench.hpp"
 #include "capture.hpp"
 #include "compare.hpp"
 #include "cli.hpp"
@@ -19,6 +20,7 @@ int main(int argc, char** argv) {
         if (o.mode == Mode::Auto) o.mode = displayAvailable() ? Mode::View : Mode::Capture;
         if (o.mode == Mode::View) return runViewer(o);
         if (o.mode == Mode::Compare) return runCompare(o);
+        if (o.mode == Mode::Bench) return runBench(o);
         return runCapture(o);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "ppr: error: %s\n", e.what());

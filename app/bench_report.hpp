@@ -1,0 +1,52 @@
+#pragma once
+// What `ppr bench` measured, and its files: bench.json (the data), bench.md (tables with ratios
+// measured in the same run) and bench.png (the sweeps' charts).
+#include "ppr_common/tiles.h"
+
+#include <nlohmann/json.hpp>
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ppr::app {
+
+struct BenchTechnique {
+    std::string name;
+    double techniqueMs = 0.0;  // the technique's own passes
+    double frameMs = 0.0;      // the whole frame
+    std::map<std::string, double> passMs;
+    std::optional<double> psnrDb, psnrReflectionDb, coverage;  // against planar (absent for planar itself)
+};
+
+struct BenchReflectorRow {  // reflectors sweep
+    uint32_t reflectors = 0;
+    bool tiles = true;
+    double projectMs = 0.0, boundsMs = 0.0, techniqueMs = 0.0;
+    uint64_t pairs = 0, pairsUnculled = 0;
+};
+
+struct BenchCoverageRow {  // coverage sweep
+    std::string camera;
+    double reflectiveTiles = 0.0;  // fraction of screen tiles holding reflector pixels
+    bool indirect = true;
+    double reflectMs = 0.0, clearMs = 0.0, classifyMs = 0.0;
+};
+
+struct BenchResults {
+    nlohmann::json header;  // device, size, frames, warm-up, environment
+    std::string techniquesCamera;
+    std::vector<BenchTechnique> techniques;
+    std::string reflectorsScene, reflectorsCamera;
+    std::vector<BenchReflectorRow> reflectors;
+    std::string coverageScene;
+    std::vector<BenchCoverageRow> coverage;
+};
+
+nlohmann::json benchJson(const BenchResults& results);
+std::string benchMarkdown(const BenchResults& results, const std::string& commandLine);
+// The sweeps side by side (those that ran); false when neither ran.
+bool writeBenchPlot(const BenchResults& results, const std::string& path);
+
+}  // namespace ppr::app
