@@ -15,6 +15,7 @@
 #define PPR_END }
 #define PPR_INLINE inline
 #define PPR_OUT(T) T&
+#define PPR_INOUT(T) T&
 #define PPR_SIZE_CHECK(T, bytes) static_assert(sizeof(ppr::gpu::T) == (bytes), #T " size mismatch with GLSL")
 #define PPR_CONST(type, name, value) namespace ppr::gpu { using uint = uint32_t; inline constexpr type name = value; }
 #else
@@ -22,6 +23,7 @@
 #define PPR_END
 #define PPR_INLINE
 #define PPR_OUT(T) out T
+#define PPR_INOUT(T) inout T  // GLSL `out` starts undefined: use this to update a caller's value
 #define PPR_SIZE_CHECK(T, bytes)
 #define PPR_CONST(type, name, value) const type name = value;
 #endif

@@ -51,7 +51,7 @@ PPR_INLINE vec2 pprPixelFromClip(vec4 clip, vec2 screenSize) {
     return (ndc * 0.5f + 0.5f) * screenSize;
 }
 
-PPR_INLINE void pprAddPoint(PPR_OUT(PprScreenBounds) b, vec2 pixel) {
+PPR_INLINE void pprAddPoint(PPR_INOUT(PprScreenBounds) b, vec2 pixel) {
     b.lo = min(b.lo, pixel);
     b.hi = max(b.hi, pixel);
 }

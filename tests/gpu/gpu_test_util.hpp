@@ -20,8 +20,8 @@ struct GpuFixture {
     std::unique_ptr<app::Renderer> renderer;
     std::unique_ptr<app::HeadlessRenderer> headless;
 
-    explicit GpuFixture(const std::string& scenePath = PPR_DEFAULT_SCENE_FILE) {
-        scene = scene::loadGltf(scenePath);
+    explicit GpuFixture(const std::string& scenePath = PPR_DEFAULT_SCENE_FILE) : GpuFixture(scene::loadGltf(scenePath)) {}
+    explicit GpuFixture(scene::Scene s) : scene(std::move(s)) {
         vk::ContextOptions o;
         o.validation = true;  // Khronos validation + synchronization validation
         ctx = vk::Context::create(o);

@@ -1,0 +1,151 @@
+// PPR at scale: per-tile reflector culling and indirect dispatch change no pixel, the indirect
+// arguments are what the view needs, culling does cull, and a reflector set above the budget
+// renders with a warning. Validation + synchronization validation on throughout.
+#include "gpu_test_util.hpp"
+#include "ppr_common/tiles.h"
+#include "scene/stress_scene.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstring>
+#include <fstream>
+
+namespace ppr::test {
+namespace {
+
+constexpr VkExtent2D kSize{480, 270};  // not a multiple of the tile size: partial tiles at the edges
+
+struct Frame {
+    app::FloatImage reflection;
+    app::CaptureResult capture;
+};
+
+Frame render(GpuFixture& f, const scene::CameraPose& camera, const std::string& tiles, const std::string& indirect,
+             const std::string& debug = "none") {
+    f.renderer->setTechnique("ppr");
+    f.renderer->settings().set("tiles", tiles);
+    f.renderer->settings().set("indirect", indirect);
+    f.renderer->settings().set("debug", debug);
+    Frame fr;
+    fr.capture = f.headless->capture(camera, kSize, 1, false, true);
+    fr.reflection = fr.capture.reflection;
+    return fr;
+}
+
+bool identical(const app::FloatImage& a, const app::FloatImage& b) {
+    return a.width == b.width && a.height == b.height && a.rgba.size() == b.rgba.size() &&
+           std::memcmp(a.rgba.data(), b.rgba.data(), a.rgba.size() * sizeof(float)) == 0;
+}
+
+size_t reflectedPixels(const app::FloatImage& img) {
+    size_t n = 0;
+    for (size_t i = 3; i < img.rgba.size(); i += 4) n += img.rgba[i] > 0.0f;
+    return n;
+}
+
+// Every toggle combination gives the bit-identical reflection image of tiles=0 indirect=0, and the
+// whole-screen decoded intermediate buffer (debug=intermediate) is identical with culling on and off.
+void expectTogglesChangeNothing(GpuFixture& f, const std::string& camera) {
+    const scene::CameraPose pose = f.camera(camera);
+    const Frame reference = render(f, pose, "0", "0");
+    ASSERT_GT(reflectedPixels(reference.reflection), 100u) << camera << ": the view should show reflections";
+    for (const auto& [tiles, indirect] : {std::pair{"1", "1"}, std::pair{"1", "0"}, std::pair{"0", "1"}})
+        EXPECT_TRUE(identical(render(f, pose, tiles, indirect).reflection, reference.reflection))
+            << camera << ": tiles=" << tiles << " indirect=" << indirect << " differs from tiles=0 indirect=0";
+    EXPECT_TRUE(identical(render(f, pose, "1", "1", "intermediate").reflection, render(f, pose, "0", "1", "intermediate").reflection))
+        << camera << ": the intermediate buffer differs with culling on and off";
+}
+
+TEST(PprTiles, CullingAndIndirectAreBitIdenticalOnTheDefaultScene) {
+    GpuFixture f;
+    for (const char* camera : {"overview", "puddles", "grazing", "stairs", "mirror"}) expectTogglesChangeNothing(f, camera);
+    EXPECT_EQ(f.ctx->validationErrors(), 0u);
+}
+
+TEST(PprTiles, CullingAndIndirectAreBitIdenticalOnTheStressScene) {
+    GpuFixture f(scene::makeStressScene(256));
+    for (const char* camera : {"overview", "reflective_5", "reflective_25"}) expectTogglesChangeNothing(f, camera);
+    EXPECT_EQ(f.ctx->validationErrors(), 0u);
+}
+
+TEST(PprTiles, CullingKeepsFewReflectorsPerTile) {
+    GpuFixture f(scene::makeStressScene(256));
+    const Frame on = render(f, f.camera("overview"), "1", "1");
+    ASSERT_TRUE(on.capture.pprStats);
+    const gpu::PprFrameStats& s = *on.capture.pprStats;
+    const uint64_t unculled = uint64_t(s.tilesWithContent) * 256;
+    std::printf("pairs kept %u of %llu, at most %u in one tile\n", s.reflectorTilePairs, static_cast<unsigned long long>(unculled),
+                s.maxTileSurvivors);
+    EXPECT_GT(s.reflectorTilePairs, 0u);
+    EXPECT_LT(s.reflectorTilePairs, unculled / 8) << "per-tile culling should drop most (tile, reflector) pairs";
+    EXPECT_LT(s.maxTileSurvivors, 256u);
+    // Without culling every content tile keeps every reflector.
+    const Frame off = render(f, f.camera("overview"), "0", "1");
+    ASSERT_TRUE(off.capture.pprStats);
+    EXPECT_EQ(off.capture.pprStats->reflectorTilePairs, unculled);
+    EXPECT_EQ(f.ctx->validationErrors(), 0u);
+}
+
+TEST(PprTiles, IndirectArgumentsCountTheReflectiveTiles) {
+    GpuFixture f;
+    // Looking up at the sky above the courtyard: no reflector pixel on screen.
+    scene::CameraPose sky = f.camera("overview");
+    sky.pitchDeg = 80.0f;
+    const Frame none = render(f, sky, "1", "1");
+    ASSERT_TRUE(none.capture.pprStats);
+    const gpu::TileDispatchArgs planar = none.capture.pprStats->dispatch[gpu::kTileClassPlanar];
+    EXPECT_EQ(planar.x, 0u) << "no reflective pixel: zero reflection workgroups";
+    EXPECT_EQ(planar.y, 1u);
+    EXPECT_EQ(planar.z, 1u);
+    EXPECT_EQ(reflectedPixels(none.reflection), 0u);
+
+    const Frame some = render(f, f.camera("puddles"), "1", "1");
+    ASSERT_TRUE(some.capture.pprStats);
+    const uint32_t tiles = ((kSize.width + gpu::kPprTileSize - 1) / gpu::kPprTileSize) * ((kSize.height + gpu::kPprTileSize - 1) / gpu::kPprTileSize);
+    EXPECT_GT(some.capture.pprStats->dispatch[gpu::kTileClassPlanar].x, 0u);
+    EXPECT_LT(some.capture.pprStats->dispatch[gpu::kTileClassPlanar].x, tiles);
+    EXPECT_EQ(f.ctx->validationErrors(), 0u);
+}
+
+TEST(PprTiles, ReflectorsAboveTheBudgetWarnAndStillRender) {
+    GpuFixture f(scene::makeStressScene(gpu::kPprMaxReflectors + 1));
+    EXPECT_NE(f.renderer->reflectorWarning().find("1025 reflectors exceed PPR's budget of 1024"), std::string::npos)
+        << f.renderer->reflectorWarning();
+    const Frame fr = render(f, f.camera("overview"), "1", "1");
+    EXPECT_EQ(fr.capture.warning, f.renderer->reflectorWarning());
+    EXPECT_GT(reflectedPixels(fr.reflection), 100u);
+    EXPECT_GT(lumaStdDev(fr.capture.image), 5.0);
+    EXPECT_EQ(f.ctx->validationErrors(), 0u);
+}
+
+TEST(PprTilesCli, ReportHoldsTileCountsAndTheBudgetWarning) {
+    const auto dir = tempDir("tiles-cli");
+    const RunResult r = runPpr("capture --scene stress:1025 --camera overview --size 160x90 --frames 1 --validation --out " + dir.string());
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("ppr: warning: 1025 reflectors exceed PPR's budget of 1024"), std::string::npos) << r.output;
+    const nlohmann::json report = nlohmann::json::parse(std::ifstream(dir / "report.json"));
+    EXPECT_EQ(report["ppr"]["reflectors_projected"], 1024);
+    EXPECT_GT(report["ppr"]["tiles_planar"].get<int>(), 0);
+    EXPECT_GT(report["ppr"]["reflector_tile_pairs"].get<int>(), 0);
+    EXPECT_EQ(report["warnings"].size(), 1u);
+    EXPECT_EQ(report["validation_errors"], 0);
+}
+
+TEST(PprBenchCli, WritesTablesAndPlot) {
+    const auto dir = tempDir("bench-cli");
+    const RunResult r = runPpr("bench --size 96x54 --frames 1 --warmup 0 --validation --out " + dir.string());
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("ppr bench [21/21]"), std::string::npos) << r.output;  // the progress line
+    const nlohmann::json bench = nlohmann::json::parse(std::ifstream(dir / "bench.json"));
+    EXPECT_EQ(bench["sweeps"]["reflectors"]["rows"].size(), 12u);
+    EXPECT_EQ(bench["sweeps"]["coverage"]["rows"].size(), 6u);
+    for (const char* t : {"ppr", "planar", "none"}) EXPECT_TRUE(bench["techniques"]["results"].contains(t)) << t;
+    EXPECT_TRUE(bench["techniques"]["results"]["ppr"]["psnr_db"].is_number());
+    EXPECT_GT(bench["techniques"]["results"]["ppr"]["gpu_ms"].get<double>(), 0.0);
+    EXPECT_TRUE(std::filesystem::exists(dir / "bench.md"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "bench.png"));
+    EXPECT_EQ(bench["validation_errors"], 0);
+}
+
+}  // namespace
+}  // namespace ppr::test
