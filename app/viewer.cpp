@@ -164,6 +164,7 @@ private:
     bool looking_ = false;
     double lastCursorX_ = 0.0, lastCursorY_ = 0.0;
     TimingHistory timings_;
+    std::optional<gpu::PprFrameStats> pprStats_;
     std::deque<double> frameMs_, cpuMs_;
     std::string status_;
     std::string warning_;  // from the renderer (e.g. PPR refused at this size), shown in the panel
@@ -305,6 +306,9 @@ void Viewer::buildUi() {
     m.technique = renderer_->technique();
     m.warning = warning_;
     m.timings = &timings_;
+    m.pprStats = pprStats_;
+    m.reflectors = static_cast<uint32_t>(renderer_->reflectors().size());
+    m.reflectorsProjected = std::min(m.reflectors, gpu::kPprMaxReflectors);
     m.status = status_;
     const PanelActions a = drawPanel(m);
     status_ = m.status;
@@ -443,6 +447,7 @@ void Viewer::run(uint64_t maxFrames, uint64_t captureAt) {
         VK_CHECK(vkWaitForFences(ctx_.device(), 1, &sync_.fence[slot], VK_TRUE, UINT64_MAX));
         if (sync_.busy[slot]) {
             timings_.add(renderer_->timings(slot));
+            if (auto stats = renderer_->frameStats(slot)) pprStats_ = stats;
             sync_.busy[slot] = false;
         }
         // Every frame at or before frames_ - kFramesInFlight has completed: unused transients can go.

@@ -284,6 +284,17 @@ PanelActions drawPanel(PanelModel& m) {
         }
         ImGui::TextDisabled("planar = ground truth (re-renders the scene per plane)");
         if (!m.warning.empty()) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.2f, 1.0f), "%s", m.warning.c_str());
+        if (m.technique == "ppr" && m.pprStats) {
+            // The counts behind tiles / indirect: what the classification found and what culling kept.
+            const gpu::PprFrameStats& s = *m.pprStats;
+            const uint32_t tiles = ((m.extent.width + gpu::kPprTileSize - 1) / gpu::kPprTileSize) *
+                                   ((m.extent.height + gpu::kPprTileSize - 1) / gpu::kPprTileSize);
+            ImGui::Text("reflectors %u (PPR projects %u)", m.reflectors, m.reflectorsProjected);
+            ImGui::Text("tiles %u: reflective %u, other reflective %u", tiles, s.dispatch[gpu::kTileClassPlanar].x,
+                        s.dispatch[gpu::kTileClassOther].x);
+            ImGui::Text("reflector-tile pairs %u of %llu (max %u per tile)", s.reflectorTilePairs,
+                        static_cast<unsigned long long>(s.tilesWithContent) * m.reflectorsProjected, s.maxTileSurvivors);
+        }
     }
 
     if (ImGui::CollapsingHeader("Settings", ImGuiTreeNodeFlags_DefaultOpen)) {

@@ -2,6 +2,7 @@
 // The viewer's ImGui side: the ImGui context with its GLFW + Vulkan (1.86, render-pass based)
 // backends drawn through passes::UiPass, the rolling per-pass GPU timing history, and the "ppr"
 // panel (device, frame times, cameras, vsync, every --set setting, GPU timing table, capture).
+#include "ppr_common/tiles.h"
 #include "renderer.hpp"
 #include "scene_source.hpp"
 #include "techniques.hpp"
@@ -9,6 +10,7 @@
 
 #include <deque>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -80,6 +82,8 @@ struct PanelModel {
     std::string technique;  // current; a change comes back in PanelActions::technique
     std::string warning;    // the renderer's, shown in the panel
     const TimingHistory* timings = nullptr;
+    std::optional<gpu::PprFrameStats> pprStats;  // tile and culling counts of the last completed PPR frame
+    uint32_t reflectors = 0, reflectorsProjected = 0;
     std::string status;  // last capture result or settings error
 };
 
