@@ -196,7 +196,8 @@ std::optional<graph::ImageHandle> Renderer::addReflection(graph::RenderGraph& g,
                                                           graph::ImageHandle shadowMap, const Views& views) {
     if (technique == "ppr") {
         const uint32_t projected = reflectorBuffer_->projected();
-        const passes::ReflectorBinding binding{reflectorBuffer_->reflectors(slot), reflectorBuffer_->order(slot), projected};
+        const passes::ReflectorBinding binding{reflectorBuffer_->reflectors(slot), reflectorBuffer_->order(slot),
+                                               reflectorBuffer_->planeLeaders(slot), projected, reflectorBuffer_->cullPlaneCount()};
         const passes::TileLists tiles = tileClassify_->add(g, in, gb, g.importBuffer("ppr.stats", &statsImport_[slot]), projected);
         passes::PprProjectInputs project;
         project.depth = gb.depth;

@@ -12,30 +12,42 @@ ReflectorBuffer::~ReflectorBuffer() {
     for (Slot& s : slots_) {
         vk::destroyBuffer(ctx_, s.reflectors);
         vk::destroyBuffer(ctx_, s.order);
+        vk::destroyBuffer(ctx_, s.planeLeaders);
     }
 }
 
 std::vector<uint32_t> ReflectorBuffer::cullPlanes(const std::vector<scene::Reflector>& rs, const scene::ReflectorGroups& groups) {
-    // Same plane to within what the 2 px culling margin absorbs: identical normal, offsets 10 µm apart.
+    // Same plane to within what the culling slack absorbs: identical normal, offsets 10 µm apart.
+    // Leaders are searched per orientation group (plane groups are not transitive).
     constexpr float kSamePlane = 1e-5f;
     std::vector<uint32_t> out(rs.size());
-    std::vector<std::vector<uint32_t>> leaders(groups.planeGroupCount);  // per plane group
+    std::vector<std::vector<uint32_t>> leaders(groups.orientationGroupCount);
     for (uint32_t i = 0; i < rs.size(); ++i) {
         out[i] = i;
-        for (uint32_t j : leaders[groups.planeGroup[i]]) {
+        for (uint32_t j : leaders[groups.orientationGroup[i]]) {
             if (rs[j].normal == rs[i].normal && std::abs(glm::dot(rs[i].center - rs[j].center, rs[j].normal)) <= kSamePlane) {
                 out[i] = j;
                 break;
             }
         }
-        if (out[i] == i) leaders[groups.planeGroup[i]].push_back(i);
+        if (out[i] == i) leaders[groups.orientationGroup[i]].push_back(i);
     }
     return out;
+}
+
+std::vector<uint32_t> ReflectorBuffer::cullPlaneLeaders(const std::vector<uint32_t>& planes) {
+    std::vector<uint32_t> leaders;
+    for (uint32_t i = 0; i < planes.size() && leaders.size() < gpu::kPprMaxCullPlanes; ++i)
+        if (planes[i] == i) leaders.push_back(i);
+    return leaders;
 }
 
 std::vector<gpu::ReflectorData> ReflectorBuffer::pack(const std::vector<scene::Reflector>& rs, const scene::ReflectorGroups& groups) {
     std::vector<gpu::ReflectorData> out(rs.size());
     const std::vector<uint32_t> planes = cullPlanes(rs, groups);
+    const std::vector<uint32_t> leaders = cullPlaneLeaders(planes);
+    std::vector<uint32_t> compact(rs.size(), gpu::kPprNoCullPlane);  // leader reflector → its index in `leaders`
+    for (uint32_t k = 0; k < leaders.size(); ++k) compact[leaders[k]] = k;
     for (size_t i = 0; i < rs.size(); ++i) {
         const scene::Reflector& r = rs[i];
         gpu::ReflectorData& d = out[i];
@@ -49,7 +61,7 @@ std::vector<gpu::ReflectorData> ReflectorBuffer::pack(const std::vector<scene::R
         d.orientationGroup = groups.orientationGroup[i];
         d.planeGroup = groups.planeGroup[i];
         d.kind = r.kind == scene::ReflectorKind::Glass ? gpu::kReflectorGlass : gpu::kReflectorOpaque;
-        d.cullPlane = planes[i];
+        d.cullPlane = compact[planes[i]];
         d.pad1 = 0;
     }
     return out;
@@ -65,6 +77,9 @@ void ReflectorBuffer::update(uint32_t slot, const std::vector<scene::Reflector>&
         projectionOrder_.clear();
         for (uint32_t i : groups_.projectionOrder)
             if (i < projected_) projectionOrder_.push_back(i);
+        planeLeaders_ = cullPlaneLeaders(cullPlanes(rs, groups_));
+        planeLeaders_.erase(std::remove_if(planeLeaders_.begin(), planeLeaders_.end(), [&](uint32_t i) { return i >= projected_; }),
+                            planeLeaders_.end());
     }
     Slot& s = slots_[slot];
     if (s.version == version) return;
@@ -72,6 +87,9 @@ void ReflectorBuffer::update(uint32_t slot, const std::vector<scene::Reflector>&
     if (n > s.capacity) {
         vk::destroyBuffer(ctx_, s.reflectors);
         vk::destroyBuffer(ctx_, s.order);
+        vk::destroyBuffer(ctx_, s.planeLeaders);
+        s.planeLeaders = vk::createBuffer(ctx_, gpu::kPprMaxCullPlanes * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                          vk::MemoryUse::Upload, "reflector cull planes[" + std::to_string(slot) + "]");
         s.reflectors = vk::createBuffer(ctx_, n * sizeof(gpu::ReflectorData), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Upload,
                                         "reflectors[" + std::to_string(slot) + "]");
         s.order = vk::createBuffer(ctx_, n * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Upload,
@@ -82,7 +100,9 @@ void ReflectorBuffer::update(uint32_t slot, const std::vector<scene::Reflector>&
     if (!data.empty()) {
         std::memcpy(s.reflectors.mapped, data.data(), data.size() * sizeof(gpu::ReflectorData));
         std::memcpy(s.order.mapped, projectionOrder_.data(), projectionOrder_.size() * sizeof(uint32_t));
+        std::memcpy(s.planeLeaders.mapped, planeLeaders_.data(), planeLeaders_.size() * sizeof(uint32_t));
     }
+    vmaFlushAllocation(ctx_.allocator(), s.planeLeaders.allocation, 0, VK_WHOLE_SIZE);
     vmaFlushAllocation(ctx_.allocator(), s.reflectors.allocation, 0, VK_WHOLE_SIZE);
     vmaFlushAllocation(ctx_.allocator(), s.order.allocation, 0, VK_WHOLE_SIZE);
     s.version = version;

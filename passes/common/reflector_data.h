@@ -17,8 +17,8 @@ struct ReflectorData {
     uint orientationGroup;  // reflectors facing the same way share it
     uint planeGroup;        // coplanar reflectors share it
     uint kind;              // kReflectorOpaque | kReflectorGlass
-    uint cullPlane;         // first reflector in the same plane (itself if none): per-tile culling
-                            // mirrors a tile once per such plane (ppr_common/tile_culling.h)
+    uint cullPlane;         // index of its plane among the cull planes (kPprNoCullPlane beyond them):
+                            // per-tile culling mirrors a tile once per plane (ppr_common/tile_culling.h)
     uint pad1;
 };
 PPR_END

@@ -16,11 +16,5 @@ layout(push_constant, scalar) uniform Push { PprBoundsPush pc; };
 void main() {
     uint i = gl_GlobalInvocationID.x;
     if (i >= pc.reflectorCount) return;
-    ReflectorData r = reflectors[i];
-    PprReflectorBounds b;
-    b.rect = pprReflectorScreenRect(r, frame.viewProj, frame.screenSize);
-    // The projection pass skips a reflector when this is <= 0; a small tolerance keeps the cull conservative.
-    b.reflects = dot(frame.cameraPos.xyz - r.center, r.normal) > -1e-5 ? 1u : 0u;
-    b.pad0 = 0u;
-    bounds[i] = b;
+    bounds[i] = pprReflectorBounds(reflectors[i], frame.viewProj, frame.cameraPos.xyz, frame.screenSize);
 }

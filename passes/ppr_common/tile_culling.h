@@ -13,6 +13,10 @@
 // and a reflector whose rectangles do not overlap there cannot receive a pixel of the tile.
 // Screen rectangles are inclusive pixel ranges packed in a uvec2 (x0 | y0 << 16, x1 | y1 << 16),
 // grown by kPprCullMarginPx against rounding differences between this and the per-pixel code.
+// A third, world-space test is tighter for many small coplanar reflectors (a floor of mirror
+// tiles): the crossing point also lies in the tile's hit region (pprTileHitRegion), the plane
+// points where rays to the mirror images of the tile's points cross, which must meet the
+// reflector's rectangle.
 #ifndef PPR_TILE_CULLING_H
 #define PPR_TILE_CULLING_H
 #include "common/reflector_data.h"
@@ -23,6 +27,18 @@ PPR_CONST(float, kPprCullMarginPx, 2.0f)
 PPR_CONST(float, kPprCullMinW, 1e-6f)
 PPR_CONST(uint, kPprEmptyRectLo, 0xFFFFFFFFu)  // packed empty rectangle: lo = this, hi = 0
 PPR_CONST(uint, kPprEmptyRectHi, 0u)
+// A pixel is projected only when it is more than kPprAboveEpsilon (1 mm, ppr_project.h) above the
+// plane; tiles whose points are all below half that reflect nothing in it (margin for rounding).
+PPR_CONST(float, kPprCullMinHeight, 0.5e-3f)
+// World-space slack of the hit-region test (metres): float rounding between it and the per-pixel code.
+PPR_CONST(float, kPprCullSlack, 1e-3f)
+// Cull planes the projection pass keeps per-tile tables for (shared memory); reflectors in further
+// planes get kPprNoCullPlane and are kept or dropped on their own screen rectangle alone.
+PPR_CONST(uint, kPprMaxCullPlanes, 256u)
+PPR_CONST(uint, kPprNoCullPlane, 0xFFFFu)
+// An occluder plane this close to the camera (metres) projects to a sliver that float rounding can
+// miss: its screen rectangle is the whole screen.
+PPR_CONST(float, kPprNearEyePlane, 1e-3f)
 
 PPR_BEGIN
 // Accumulates screen-space bounds of projected points (pixels).
@@ -111,6 +127,18 @@ PPR_INLINE uvec2 pprReflectorScreenRect(ReflectorData r, mat4 viewProj, vec2 scr
     return pprPackBounds(b, screenSize);
 }
 
+// The bounds pass's entry per reflector: its screen rectangle (the whole screen when its plane
+// passes by the camera) and whether the camera may see its reflecting side.
+PPR_INLINE PprReflectorBounds pprReflectorBounds(ReflectorData r, mat4 viewProj, vec3 eye, vec2 screenSize) {
+    PprReflectorBounds b;
+    float eyeHeight = dot(eye - r.center, r.normal);
+    b.rect = abs(eyeHeight) < kPprNearEyePlane ? pprFullScreenRect(screenSize) : pprReflectorScreenRect(r, viewProj, screenSize);
+    // The projection pass skips a reflector when eyeHeight <= 0; the tolerance keeps this conservative.
+    b.reflects = eyeHeight > -1e-5f ? 1u : 0u;
+    b.pad0 = 0u;
+    return b;
+}
+
 // Screen rectangle where the mirror images (in the plane through planePoint with unit planeNormal)
 // of the tile's points above that plane can land; the tile's points lie in the box lo..hi. Empty
 // when no point of the box is above the plane; the whole screen when a mirrored corner is behind
@@ -119,7 +147,7 @@ PPR_INLINE uvec2 pprTileReflectedRect(vec3 lo, vec3 hi, vec3 planeNormal, vec3 p
     vec3 centre = (lo + hi) * 0.5f;
     vec3 halfSize = (hi - lo) * 0.5f;
     float highest = dot(centre - planePoint, planeNormal) + dot(halfSize, abs(planeNormal));
-    if (highest <= 0.0f) return uvec2(kPprEmptyRectLo, kPprEmptyRectHi);
+    if (highest <= kPprCullMinHeight) return uvec2(kPprEmptyRectLo, kPprEmptyRectHi);
     PprScreenBounds b = pprEmptyBounds();
     for (int k = 0; k < 8; ++k) {
         vec3 corner = vec3((k & 1) != 0 ? hi.x : lo.x, (k & 2) != 0 ? hi.y : lo.y, (k & 4) != 0 ? hi.z : lo.z);
@@ -129,6 +157,53 @@ PPR_INLINE uvec2 pprTileReflectedRect(vec3 lo, vec3 hi, vec3 planeNormal, vec3 p
         pprAddPoint(b, pprPixelFromClip(clip, screenSize));
     }
     return pprPackBounds(b, screenSize);
+}
+// World-space box of the tile's hit region in the plane (through planePoint, unit planeNormal): where
+// the rays from `eye` to the mirror images of the box's points higher than kPprCullMinHeight cross
+// the plane. That ray crosses where the ray from the mirrored eye to the point itself does, so the
+// region is the box, clipped to that height, projected from the mirrored eye: the hull of its
+// projected vertices (corners above, and where edges cross the height). Empty (lo > hi) when no
+// point is that high; unbounded when the camera is not in front of the plane.
+PPR_INLINE void pprTileHitRegion(vec3 lo, vec3 hi, vec3 planeNormal, vec3 planePoint, vec3 eye, PPR_OUT(vec3) hitLo, PPR_OUT(vec3) hitHi) {
+    hitLo = vec3(3.4e38f);
+    hitHi = vec3(-3.4e38f);
+    float eyeHeight = dot(eye - planePoint, planeNormal);
+    if (eyeHeight <= 1e-4f) {
+        hitLo = vec3(-3.4e38f);
+        hitHi = vec3(3.4e38f);
+        return;
+    }
+    vec3 mirroredEye = eye - 2.0f * eyeHeight * planeNormal;
+    for (int k = 0; k < 8; ++k) {
+        vec3 corner = vec3((k & 1) != 0 ? hi.x : lo.x, (k & 2) != 0 ? hi.y : lo.y, (k & 4) != 0 ? hi.z : lo.z);
+        float d = dot(corner - planePoint, planeNormal);
+        if (d >= kPprCullMinHeight) {
+            vec3 hit = mix(mirroredEye, corner, eyeHeight / (eyeHeight + d));
+            hitLo = min(hitLo, hit);
+            hitHi = max(hitHi, hit);
+        }
+        for (int axis = 0; axis < 3; ++axis) {  // the edges from this corner towards +x, +y, +z
+            int bit = 1 << axis;
+            if ((k & bit) != 0) continue;
+            int m = k | bit;
+            vec3 other = vec3((m & 1) != 0 ? hi.x : lo.x, (m & 2) != 0 ? hi.y : lo.y, (m & 4) != 0 ? hi.z : lo.z);
+            float e = dot(other - planePoint, planeNormal);
+            if ((d < kPprCullMinHeight) != (e < kPprCullMinHeight)) {
+                vec3 crossing = mix(corner, other, (kPprCullMinHeight - d) / (e - d));
+                vec3 hit = mix(mirroredEye, crossing, eyeHeight / (eyeHeight + kPprCullMinHeight));
+                hitLo = min(hitLo, hit);
+                hitHi = max(hitHi, hit);
+            }
+        }
+    }
+    hitLo -= vec3(kPprCullSlack);
+    hitHi += vec3(kPprCullSlack);
+}
+
+// Does the reflector's rectangle meet the world-space box lo..hi?
+PPR_INLINE bool pprRectangleMeetsBox(ReflectorData r, vec3 lo, vec3 hi) {
+    vec3 extent = abs(r.tangent) * r.halfExtentU + abs(r.bitangent) * r.halfExtentV;
+    return all(lessThanEqual(r.center - extent, hi)) && all(lessThanEqual(lo, r.center + extent));
 }
 PPR_END
 PPR_SIZE_CHECK(PprReflectorBounds, 16);

@@ -21,13 +21,15 @@ layout(set = 0, binding = 4, r32ui) uniform uimage2D intermediate;
 layout(set = 0, binding = 5, scalar) readonly buffer Bounds { PprReflectorBounds bounds[]; };
 layout(set = 0, binding = 6, scalar) writeonly buffer TileSurvivors { uint tileSurvivors[]; };
 layout(set = 0, binding = 7, scalar) buffer Stats { PprFrameStats stats; };
+layout(set = 0, binding = 8, scalar) readonly buffer PlaneLeaders { uint planeLeaders[]; };  // a reflector per cull plane
 layout(push_constant, scalar) uniform Push { PprProjectPush pc; };
 
 const uint kThreads = kPprTileSize * kPprTileSize;
 
 // Tile bounds as order-preserving uints so that atomicMin/Max reduce floats.
 shared uint boxLo[3], boxHi[3];
-shared uvec2 planeRect[kPprMaxReflectors];          // per cull plane (indexed by its first reflector)
+shared uvec2 planeRect[kPprMaxCullPlanes];          // per cull plane: the tile's mirrored screen rectangle
+shared vec3 hitLo[kPprMaxCullPlanes], hitHi[kPprMaxCullPlanes];  // and its hit region
 shared uint survivorWords[kPprMaxReflectors / 2u];  // 16-bit reflector indices, in projection order
 shared uint occluderWords[kPprMaxReflectors / 2u];  // 16-bit reflector indices, in any order
 shared uint chunkMask[kThreads / 32u];
@@ -82,11 +84,17 @@ void writeOffset(ivec2 pix, vec3 mirrored) {
 // Builds this tile's survivor and occluder lists. Called by every thread (uniform control flow).
 void cullReflectors(vec3 lo, vec3 hi) {
     uint lid = gl_LocalInvocationIndex;
-    // Mirrored tile bounds once per cull plane.
-    for (uint base = 0u; base < pc.reflectorCount; base += kThreads) {
-        uint i = base + lid;
-        if (i < pc.reflectorCount && reflectors[i].cullPlane == i)
-            planeRect[i] = pprTileReflectedRect(lo, hi, reflectors[i].normal, reflectors[i].center, frame.viewProj, frame.screenSize);
+    // The tile mirrored once per cull plane.
+    for (uint base = 0u; base < pc.cullPlaneCount; base += kThreads) {
+        uint plane = base + lid;
+        if (plane < pc.cullPlaneCount) {
+            ReflectorData leader = reflectors[planeLeaders[plane]];
+            planeRect[plane] = pprTileReflectedRect(lo, hi, leader.normal, leader.center, frame.viewProj, frame.screenSize);
+            vec3 l, h;
+            pprTileHitRegion(lo, hi, leader.normal, leader.center, frame.cameraPos.xyz, l, h);
+            hitLo[plane] = l;
+            hitHi[plane] = h;
+        }
     }
     barrier();
     // Survivors in projection order: a chunk's verdicts go into a bit mask, and each survivor's rank
@@ -100,8 +108,12 @@ void cullReflectors(vec3 lo, vec3 hi) {
         if (k < pc.reflectorCount) {
             i = projectionOrder[k];
             PprReflectorBounds b = bounds[i];
-            uvec2 mirrored = planeRect[reflectors[i].cullPlane];
-            survives = b.reflects != 0u && pprRectsOverlap(mirrored, b.rect);
+            ReflectorData r = reflectors[i];
+            // Reflectors beyond the per-plane tables are judged on their own rectangle alone.
+            bool tabled = r.cullPlane != kPprNoCullPlane;
+            uvec2 mirrored = tabled ? planeRect[r.cullPlane] : b.rect;
+            survives = b.reflects != 0u && pprRectsOverlap(mirrored, b.rect) &&
+                       (!tabled || pprRectangleMeetsBox(r, hitLo[r.cullPlane], hitHi[r.cullPlane]));
             if (survives) {
                 // It can only write where both rectangles overlap.
                 atomicMin(reachLoX, max(mirrored.x & 0xFFFFu, b.rect.x & 0xFFFFu));

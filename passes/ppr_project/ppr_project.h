@@ -13,7 +13,7 @@ struct PprProjectPush {
     uint reflectorCount;  // ≤ kPprMaxReflectors (ppr_common/tiles.h)
     uint cullTiles;       // 1: per-tile reflector culling (--set tiles=1); 0: every reflector per pixel
     uint tilesX;          // tiles per row: index of the per-tile survivor count
-    uint pad0;
+    uint cullPlaneCount;  // ≤ kPprMaxCullPlanes (ppr_common/tile_culling.h)
 };
 PPR_END
 PPR_SIZE_CHECK(PprProjectPush, 16);

@@ -1,17 +1,20 @@
 #include "ppr_project/ppr_project_pass.hpp"
 
 #include "common/compute_pass.hpp"
+#include "ppr_common/tile_culling.h"
 #include "ppr_common/tiles.h"
 #include "ppr_project/ppr_project.h"
 #include "ppr_project_comp.h"
 
 namespace ppr::passes {
 
+static_assert(gpu::kPprCullMinHeight < gpu::kPprAboveEpsilon, "culling must keep every tile the projection can write from");
+
 PprProjectPass::PprProjectPass(const vk::Context& ctx) : ctx_(ctx) {
     shader::PipelineLayoutDesc layout;
     layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                            VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,          VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                           VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
+                           VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
     layout.pushConstantBytes = sizeof(gpu::PprProjectPush);
     pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(ppr_project_comp), layout, "ppr.project");
 }
@@ -22,6 +25,7 @@ PprProjectOutputs PprProjectPass::add(graph::RenderGraph& g, const FrameInputs& 
     push.reflectorCount = r.count;
     push.cullTiles = inputs.cullTiles ? 1u : 0u;
     push.tilesX = inputs.tilesX;
+    push.cullPlaneCount = r.cullPlanes;
     PprProjectOutputs out;
     graph::BufferHandle survivors = g.createBuffer("ppr.tile_survivors", {sizeof(uint32_t) * inputs.tilesX * inputs.tilesY});
     ComputePass(g, ctx_, "ppr.project", pipeline_)
@@ -33,6 +37,7 @@ PprProjectOutputs PprProjectPass::add(graph::RenderGraph& g, const FrameInputs& 
         .storageRead(inputs.bounds)
         .storageWrite(survivors, &out.tileSurvivors)
         .storageReadWrite(inputs.stats, &out.stats)
+        .hostStorage(r.planeLeaders)
         .push(push)
         .dispatch(in.extent, gpu::kPprTileSize);
     return out;

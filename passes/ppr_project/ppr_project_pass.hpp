@@ -9,7 +9,9 @@ namespace ppr::passes {
 struct ReflectorBinding {  // the reflector buffers of the frame's slot (common/reflector_buffer.hpp)
     VkBuffer reflectors = VK_NULL_HANDLE;
     VkBuffer order = VK_NULL_HANDLE;
-    uint32_t count = 0;  // reflectors projected (≤ kPprMaxReflectors)
+    VkBuffer planeLeaders = VK_NULL_HANDLE;  // a reflector per cull plane
+    uint32_t count = 0;                      // reflectors projected (≤ kPprMaxReflectors)
+    uint32_t cullPlanes = 0;
 };
 
 struct PprProjectInputs {
