@@ -4,8 +4,8 @@
 #define PPR_TILES_H
 #include "shader/shared.h"
 
-// 16x16: one workgroup of 256 threads per tile. Measured on lavapipe against 8x8 (docs/performance.md):
-// per-tile culling costs per tile, so larger tiles amortise it; the reflection pass is indifferent.
+// 16x16: one workgroup of 256 threads per tile. Per-tile culling is paid per tile, so larger tiles
+// amortise it, and its shared-memory lists fit in about 12 KB (8x8 has not been measured yet).
 PPR_CONST(uint, kPprTileSize, 16u)
 // Reflectors PPR handles at once; the rest of a larger set are ignored with a warning. Bounded by
 // the projection pass's shared-memory tables (ppr_project.comp).
