@@ -68,6 +68,13 @@ struct Measured {
     CaptureResult last;  // the last frame (image, reflection when asked, counters)
 };
 
+double techniqueSum(const std::string& technique, const std::map<std::string, double>& passMs) {
+    double sum = 0.0;
+    for (const auto& [name, ms] : passMs)
+        if (isTechniquePass(technique, name)) sum += ms;
+    return sum;
+}
+
 double passOr0(const std::map<std::string, double>& m, const std::string& name) {
     auto it = m.find(name);
     return it == m.end() ? 0.0 : it->second;
@@ -143,8 +150,7 @@ private:
             row.name = t;
             row.passMs = m.passMs;
             row.frameMs = m.frameMs;
-            for (const auto& [name, ms] : m.passMs)
-                if (isTechniquePass(t, name)) row.techniqueMs += ms;
+            row.techniqueMs = techniqueSum(t, m.passMs);
             if (t != "planar") {
                 FloatImage reflection = m.last.reflection;
                 if (reflection.rgba.empty()) {  // technique none: no reflection anywhere
@@ -177,8 +183,7 @@ private:
                 row.tiles = tiles;
                 row.projectMs = passOr0(m.passMs, "ppr.project");
                 row.boundsMs = passOr0(m.passMs, "ppr.bounds");
-                for (const auto& [name, ms] : m.passMs)
-                    if (isTechniquePass("ppr", name)) row.techniqueMs += ms;
+                row.techniqueMs = techniqueSum("ppr", m.passMs);
                 if (m.last.pprStats) {
                     row.pairs = m.last.pprStats->reflectorTilePairs;
                     row.pairsUnculled = uint64_t(m.last.pprStats->tilesWithContent) * std::min(n, gpu::kPprMaxReflectors);
@@ -192,8 +197,7 @@ private:
         results_.coverageScene = "stress:" + std::to_string(kCoverageSceneTiles);
         Rig rig(*ctx_, scene::makeStressScene(kCoverageSceneTiles), o_);
         rig.renderer->setTechnique("ppr");
-        const uint32_t tiles = ((extent_.width + gpu::kPprTileSize - 1) / gpu::kPprTileSize) *
-                               ((extent_.height + gpu::kPprTileSize - 1) / gpu::kPprTileSize);
+        const uint32_t tiles = gpu::pprTilesCovering(extent_.width) * gpu::pprTilesCovering(extent_.height);
         for (const char* name : kCoverageCameras) {
             const scene::CameraPose camera = rig.camera(name);
             for (bool indirect : {true, false}) {

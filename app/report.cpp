@@ -17,8 +17,7 @@ double techniqueMs(const std::string& technique, const CaptureResult& r) {
 nlohmann::json pprStatsJson(const CaptureResult& r, VkExtent2D size, size_t projected) {
     if (!r.pprStats) return nullptr;
     const gpu::PprFrameStats& s = *r.pprStats;
-    const uint32_t tilesX = (size.width + gpu::kPprTileSize - 1) / gpu::kPprTileSize;
-    const uint32_t tilesY = (size.height + gpu::kPprTileSize - 1) / gpu::kPprTileSize;
+    const uint32_t tilesX = gpu::pprTilesCovering(size.width), tilesY = gpu::pprTilesCovering(size.height);
     return {{"tile_size", gpu::kPprTileSize},
             {"tiles", tilesX * tilesY},
             {"tiles_planar", s.dispatch[gpu::kTileClassPlanar].x},

@@ -287,8 +287,7 @@ PanelActions drawPanel(PanelModel& m) {
         if (m.technique == "ppr" && m.pprStats) {
             // The counts behind tiles / indirect: what the classification found and what culling kept.
             const gpu::PprFrameStats& s = *m.pprStats;
-            const uint32_t tiles = ((m.extent.width + gpu::kPprTileSize - 1) / gpu::kPprTileSize) *
-                                   ((m.extent.height + gpu::kPprTileSize - 1) / gpu::kPprTileSize);
+            const uint32_t tiles = gpu::pprTilesCovering(m.extent.width) * gpu::pprTilesCovering(m.extent.height);
             ImGui::Text("reflectors %u (PPR projects %u)", m.reflectors, m.reflectorsProjected);
             ImGui::Text("tiles %u: reflective %u, other reflective %u", tiles, s.dispatch[gpu::kTileClassPlanar].x,
                         s.dispatch[gpu::kTileClassOther].x);

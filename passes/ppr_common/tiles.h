@@ -43,6 +43,9 @@ PPR_SIZE_CHECK(PprFrameStats, 48);
 // kTileClassCount must match PprFrameStats::dispatch.
 
 PPR_BEGIN
+// Tiles needed to cover `pixels` (partial tiles at the edges count).
+PPR_INLINE uint pprTilesCovering(uint pixels) { return (pixels + kPprTileSize - 1u) / kPprTileSize; }
+
 // A tile list entry: x in the low 16 bits, y in the high 16.
 PPR_INLINE uint pprPackTile(uvec2 tile) { return tile.x | (tile.y << 16u); }
 PPR_INLINE uvec2 pprUnpackTile(uint packed) { return uvec2(packed & 0xFFFFu, packed >> 16u); }

@@ -22,8 +22,8 @@ TileClassifyPass::TileClassifyPass(const vk::Context& ctx) : ctx_(ctx) {
 TileLists TileClassifyPass::add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::BufferHandle stats,
                                 uint32_t maxReflectorId) const {
     TileLists t;
-    t.tilesX = (in.extent.width + gpu::kPprTileSize - 1) / gpu::kPprTileSize;
-    t.tilesY = (in.extent.height + gpu::kPprTileSize - 1) / gpu::kPprTileSize;
+    t.tilesX = gpu::pprTilesCovering(in.extent.width);
+    t.tilesY = gpu::pprTilesCovering(in.extent.height);
     graph::BufferHandle args = g.createBuffer("ppr.tile_args", {sizeof(gpu::TileDispatchArgs) * gpu::kTileClassCount});
     graph::BufferHandle lists = g.createBuffer("ppr.tile_lists", {sizeof(uint32_t) * gpu::kTileClassCount * t.tileCount()});
 

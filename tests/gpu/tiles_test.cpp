@@ -101,7 +101,7 @@ TEST(PprTiles, IndirectArgumentsCountTheReflectiveTiles) {
 
     const Frame some = render(f, f.camera("puddles"), "1", "1");
     ASSERT_TRUE(some.capture.pprStats);
-    const uint32_t tiles = ((kSize.width + gpu::kPprTileSize - 1) / gpu::kPprTileSize) * ((kSize.height + gpu::kPprTileSize - 1) / gpu::kPprTileSize);
+    const uint32_t tiles = gpu::pprTilesCovering(kSize.width) * gpu::pprTilesCovering(kSize.height);
     EXPECT_GT(some.capture.pprStats->dispatch[gpu::kTileClassPlanar].x, 0u);
     EXPECT_LT(some.capture.pprStats->dispatch[gpu::kTileClassPlanar].x, tiles);
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
