@@ -6,6 +6,10 @@
 #include "ppr_reflect/ppr_reflect.h"
 #include "readback/readback_pass.hpp"
 #include "scene/mirror.hpp"
+#include "ssr_brute/ssr_brute_pass.hpp"
+#include "ssr_hiz/ssr_hiz_pass.hpp"
+#include "ssr_linear/ssr_linear_pass.hpp"
+#include "ssr_lowq/ssr_lowq_pass.hpp"
 #include "techniques.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -57,6 +61,12 @@ Renderer::Renderer(const vk::Context& ctx, const scene::Scene& scene) : ctx_(ctx
     pprReflect_ = std::make_unique<passes::PprReflectPass>(ctx);
     pprBounds_ = std::make_unique<passes::PprBoundsPass>(ctx);
     tileClassify_ = std::make_unique<passes::TileClassifyPass>(ctx);
+    ssrBrute_ = passes::makeSsrBrutePass(ctx);
+    ssrLowq_ = passes::makeSsrLowqPass(ctx);
+    ssrHiz_ = passes::makeSsrHizPass(ctx);
+    ssrLinear_ = passes::makeSsrLinearPass(ctx);
+    hiz_ = std::make_unique<passes::HizPass>(ctx);
+    floor_ = std::make_unique<passes::FloorPass>(ctx);
     for (uint32_t slot = 0; slot < kFramesInFlight; ++slot) {
         stats_[slot] = vk::createBuffer(ctx, sizeof(gpu::PprFrameStats), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback,
                                         "ppr stats[" + std::to_string(slot) + "]");
@@ -78,6 +88,12 @@ Renderer::~Renderer() {
     vk::destroyBuffer(ctx_, frameConstants_);
     for (vk::Buffer& b : stats_) vk::destroyBuffer(ctx_, b);
     tileClassify_.reset();
+    ssrBrute_.reset();
+    ssrLowq_.reset();
+    ssrHiz_.reset();
+    ssrLinear_.reset();
+    hiz_.reset();
+    floor_.reset();
     pprBounds_.reset();
     reflectorBuffer_.reset();
     planar_.reset();
@@ -191,14 +207,48 @@ Renderer::Views Renderer::writeFrameConstants(uint32_t slot, const FrameRequest&
     return views;
 }
 
+passes::HizAtlas Renderer::addHiz(graph::RenderGraph& g, const passes::FrameInputs& in, const passes::GBuffer& gb, const FrameRequest& req,
+                                  FrameRecord& rec) {
+    const passes::HizAtlas hiz = hiz_->add(g, in, gb.depth);
+    if (req.hizReadback) {
+        passes::addReadbackPass(g, "readback.hiz", hiz.image, g.importBuffer("hiz readback", req.hizReadback));
+        rec.hizCopied = true;
+    }
+    return hiz;
+}
+
+const passes::SsrTracePass* Renderer::ssrPass(const std::string& technique) const {
+    if (technique == "ssr-brute") return ssrBrute_.get();
+    if (technique == "ssr-lowq") return ssrLowq_.get();
+    if (technique == "ssr-hiz") return ssrHiz_.get();
+    if (technique == "ssr-linear") return ssrLinear_.get();
+    return nullptr;
+}
+
+passes::SsrInputs Renderer::ssrInputs(const passes::GBuffer& gb, graph::ImageHandle lit, uint32_t slot, const passes::TileLists& tiles) const {
+    passes::SsrInputs s;
+    s.gbuffer = &gb;
+    s.sceneColor = lit;
+    s.reflectors = reflectorBuffer_->reflectors(slot);
+    s.tiles = &tiles;
+    s.params.maxDistance = static_cast<float>(settings_.number("ssr_distance"));
+    s.params.thickness = static_cast<float>(settings_.number("ssr_thickness"));
+    s.params.thicknessScale = static_cast<float>(settings_.number("ssr_thickness_scale"));
+    s.params.maxSteps = static_cast<uint32_t>(settings_.number("ssr_steps"));
+    s.indirect = settings_.get("indirect") == "1";
+    return s;
+}
+
 std::optional<graph::ImageHandle> Renderer::addReflection(graph::RenderGraph& g, const std::string& technique, uint32_t slot,
                                                           const passes::FrameInputs& in, const passes::GBuffer& gb, graph::ImageHandle lit,
-                                                          graph::ImageHandle shadowMap, const Views& views) {
+                                                          graph::ImageHandle shadowMap, const Views& views, const FrameRequest& req,
+                                                          FrameRecord& rec) {
+    auto stats = [&] { return g.importBuffer("ppr.stats", &statsImport_[slot]); };
     if (technique == "ppr") {
         const uint32_t projected = reflectorBuffer_->projected();
         const passes::ReflectorBinding binding{reflectorBuffer_->reflectors(slot), reflectorBuffer_->order(slot),
                                                reflectorBuffer_->planeLeaders(slot), projected, reflectorBuffer_->cullPlaneCount()};
-        const passes::TileLists tiles = tileClassify_->add(g, in, gb, g.importBuffer("ppr.stats", &statsImport_[slot]), projected);
+        const passes::TileLists tiles = tileClassify_->add(g, in, gb, stats(), projected);
         passes::PprProjectInputs project;
         project.depth = gb.depth;
         project.intermediate = passes::addPprClearPass(g, "ppr.intermediate", in.extent);
@@ -222,8 +272,31 @@ std::optional<graph::ImageHandle> Renderer::addReflection(graph::RenderGraph& g,
         if (settings_.get("filter") == "1") reflect.flags |= gpu::kPprFiltering;
         if (settings_.get("antibleed") == "1") reflect.flags |= gpu::kPprAntiBleeding;
         if (settings_.get("indirect") == "1") reflect.flags |= gpu::kPprIndirect;
-        return pprReflect_->add(g, in, reflect);
+        graph::ImageHandle reflection = pprReflect_->add(g, in, reflect);
+        // The debug views PPR draws over the whole screen are left as they are.
+        const bool pprDebugView = reflect.debugView == gpu::kDebugIntermediate || reflect.debugView == gpu::kDebugHoles ||
+                                  reflect.debugView == gpu::kDebugTiles;
+        if (settings_.get("fallback") == "ssr" && !pprDebugView) {
+            passes::SsrInputs fallback = ssrInputs(gb, lit, slot, tiles);
+            const passes::HizAtlas hiz = addHiz(g, in, gb, req, rec);
+            fallback.hiz = hiz.image;
+            fallback.hizLevels = hiz.levels;
+            reflection = ssrHiz_->addFallback(g, in, fallback, reflection, "ppr.fallback");
+        }
+        return reflection;
     }
+    if (const passes::SsrTracePass* ssr = ssrPass(technique)) {
+        // Every reflector id makes a tile planar here: SSR has no reflector budget.
+        const passes::TileLists tiles = tileClassify_->add(g, in, gb, stats(), UINT32_MAX);
+        passes::SsrInputs inputs = ssrInputs(gb, lit, slot, tiles);
+        if (technique == "ssr-hiz") {
+            const passes::HizAtlas hiz = addHiz(g, in, gb, req, rec);
+            inputs.hiz = hiz.image;
+            inputs.hizLevels = hiz.levels;
+        }
+        return ssr->addTechnique(g, in, inputs);
+    }
+    if (technique == "floor") return floor_->add(g, in, gb.depth, lit);
     if (technique == "planar") return planar_->add(g, in, gb, shadowMap, views.planar, reflectorBuffer_->reflectors(slot));
     return std::nullopt;
 }
@@ -255,7 +328,7 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
     graph::ImageHandle shadowMap = shadow_->add(g, in, static_cast<uint32_t>(settings_.number("shadowres")));
     passes::GBuffer gb = gbuffer_->add(g, in);
     graph::ImageHandle lit = lighting_->add(g, in, gb, shadowMap);
-    std::optional<graph::ImageHandle> reflection = addReflection(g, technique, slot, in, gb, lit, shadowMap, views);
+    std::optional<graph::ImageHandle> reflection = addReflection(g, technique, slot, in, gb, lit, shadowMap, views, req, rec);
     std::optional<passes::CompositeReflection> blend;
     if (reflection) blend = passes::CompositeReflection{*reflection, reflectorBuffer_->reflectors(slot)};
     graph::ImageHandle hdr = composite_->add(g, in, gb, lit, blend);
@@ -264,6 +337,7 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
     graph::ImageHandle output = tonemap_->add(g, in, hdr, target);
     if (req.overlay) output = req.overlay(g, output);
     if (req.readback) passes::addReadbackPass(g, "readback", output, g.importBuffer("readback", req.readback));
+    if (req.depthReadback) passes::addReadbackPass(g, "readback.depth", gb.depth, g.importBuffer("depth readback", req.depthReadback));
     if (req.reflectionReadback && reflection) {
         passes::addReadbackPass(g, "readback.reflection", *reflection, g.importBuffer("reflection readback", req.reflectionReadback));
         rec.reflectionCopied = true;

@@ -1,11 +1,15 @@
 #pragma once
 // Builds and records one frame: shadow → gbuffer → lighting → [reflection technique] → composite →
-// tonemap → [ui] → [readback], all through the render graph. Techniques: none, ppr (clear → project →
-// reflect), planar (mirrored re-render per plane, the ground truth). Owns everything created once per run (pipelines,
+// tonemap → [ui] → [readback], all through the render graph. Techniques: none, ppr (classify → clear →
+// project → reflect → [ssr-hiz fallback on non-planar tiles]), ssr-brute / ssr-lowq / ssr-hiz /
+// ssr-linear (classify → [hierarchy] → march), floor (the cost floor), planar (mirrored re-render per
+// plane, the ground truth). Owns everything created once per run (pipelines,
 // samplers, the GPU scene, the graph executor and its pool, per-frame constant buffers).
 #include "common/frame.h"
 #include "common/reflector_buffer.hpp"
 #include "composite/composite_pass.hpp"
+#include "floor/floor_pass.hpp"
+#include "hiz/hiz_pass.hpp"
 #include "gbuffer/gbuffer_pass.hpp"
 #include "graph/executor.hpp"
 #include "lighting/lighting_pass.hpp"
@@ -16,6 +20,7 @@
 #include "ppr_reflect/ppr_reflect_pass.hpp"
 #include "settings.hpp"
 #include "shadow/shadow_pass.hpp"
+#include "ssr_common/ssr_trace_pass.hpp"
 #include "tile_classify/tile_classify_pass.hpp"
 #include "tonemap/tonemap_pass.hpp"
 
@@ -35,6 +40,10 @@ struct FrameRequest {
     // When set and the technique produces one, the reflection image is copied here (RGBA16F,
     // common/reflection.h) — what `ppr compare` scores.
     graph::ExternalBuffer* reflectionReadback = nullptr;
+    // Tests: the G-buffer depth (D32 floats) and, when the frame builds it, the depth hierarchy's
+    // atlas (r32f, hiz/hiz.h layout) copied here.
+    graph::ExternalBuffer* depthReadback = nullptr;
+    graph::ExternalBuffer* hizReadback = nullptr;
     // Extra passes drawn on top of the final image (the viewer's ImGui); returns the new version.
     std::function<graph::ImageHandle(graph::RenderGraph&, graph::ImageHandle)> overlay;
     bool dumpGraph = false;  // keep the Graphviz text of this frame's graph
@@ -45,6 +54,7 @@ struct FrameRecord {
     std::string cullLog;  // passes the graph culled, if any
     std::string warning;  // e.g. a technique that could not run at this size (shown by the viewer)
     bool reflectionCopied = false;
+    bool hizCopied = false;
 };
 
 
@@ -88,7 +98,12 @@ private:
     Views writeFrameConstants(uint32_t slot, const FrameRequest& request, const std::string& technique);
     std::optional<graph::ImageHandle> addReflection(graph::RenderGraph& g, const std::string& technique, uint32_t slot,
                                                     const passes::FrameInputs& in, const passes::GBuffer& gb, graph::ImageHandle lit,
-                                                    graph::ImageHandle shadowMap, const Views& views);
+                                                    graph::ImageHandle shadowMap, const Views& views, const FrameRequest& req,
+                                                    FrameRecord& rec);
+    passes::HizAtlas addHiz(graph::RenderGraph& g, const passes::FrameInputs& in, const passes::GBuffer& gb, const FrameRequest& req,
+                            FrameRecord& rec);
+    passes::SsrInputs ssrInputs(const passes::GBuffer& gb, graph::ImageHandle lit, uint32_t slot, const passes::TileLists& tiles) const;
+    const passes::SsrTracePass* ssrPass(const std::string& technique) const;
     const vk::Context& ctx_;
     const scene::Scene& scene_;
     Settings settings_;
@@ -103,6 +118,9 @@ private:
     std::unique_ptr<passes::PprReflectPass> pprReflect_;
     std::unique_ptr<passes::PprBoundsPass> pprBounds_;
     std::unique_ptr<passes::TileClassifyPass> tileClassify_;
+    std::unique_ptr<passes::SsrTracePass> ssrBrute_, ssrLowq_, ssrHiz_, ssrLinear_;
+    std::unique_ptr<passes::HizPass> hiz_;
+    std::unique_ptr<passes::FloorPass> floor_;
     vk::Buffer stats_[kFramesInFlight];  // PprFrameStats, host-read after the slot's fence
     graph::ExternalBuffer statsImport_[kFramesInFlight];
     bool statsWritten_[kFramesInFlight]{};

@@ -16,6 +16,12 @@ const std::vector<SettingSpec>& settingSpecs() {
         {"antibleed", "1", {"0", "1"}, 0, 0, "PPR colour-bleeding reduction (YCoCg, luma and chroma apart)"},
         {"tiles", "1", {"0", "1"}, 0, 0, "PPR per-tile reflector culling in the projection pass (0: every reflector per pixel)"},
         {"indirect", "1", {"0", "1"}, 0, 0, "PPR reflection pass dispatched indirectly over reflector tiles (0: whole screen)"},
+        {"fallback", "ssr", {"ssr", "none"}, 0, 0,
+         "PPR: reflective pixels no reflector rectangle covers (curved, rough) get ssr-hiz over the non-planar tiles, or nothing"},
+        {"ssr_distance", "40", {}, 0.1, 1000.0, "SSR: longest reflected ray, metres (all four SSR techniques and PPR's fallback)"},
+        {"ssr_thickness", "0.25", {}, 0.0, 100.0, "SSR: a surface is this many metres thick (plus ssr_thickness_scale x its distance)"},
+        {"ssr_thickness_scale", "0.02", {}, 0.0, 1.0, "SSR: thickness added per metre of view distance"},
+        {"ssr_steps", "4096", {}, 1, 65536, "SSR: most march iterations per ray (the default never cuts a ray short on screen)"},
         {"exposure", "1", {}, 0.01, 100.0, "exposure multiplier before tonemapping"},
         {"shadowres", "2048", {}, 256, 8192, "shadow map resolution (texels per side)"},
     };

@@ -14,4 +14,11 @@ PPR_CONST(float, kReflectionOffscreen, 0.5f)  // planar: reflected point off scr
 // the sky), which no single-bounce screen-space technique can reproduce; not scored.
 PPR_CONST(float, kReflectionSecondary, 0.25f)
 
+PPR_BEGIN
+// Reflectance of a reflective surface that no reflector rectangle covers (curved or rough, shaded by
+// a screen-space technique with one mirror ray): a single ray cannot stand for a wide glossy lobe, so
+// the mirror image fades as the surface gets rougher.
+PPR_INLINE float surfaceReflectance(float roughness) { return (1.0f - roughness) * (1.0f - roughness); }
+PPR_END
+
 #endif

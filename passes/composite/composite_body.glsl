@@ -31,16 +31,19 @@ void main() {
     uint id = texelFetch(reflectorTex, pix, 0).r;
 #ifdef PPR_COMPOSITE_REFLECTION
     vec4 reflection = texelFetch(reflectionTex, pix, 0);
-    if (id != 0u && reflection.a > 0.0) {
+    vec4 material = texelFetch(materialTex, pix, 0);
+    bool reflective = id != 0u || material.b > 0.5;  // gbuffer.h: material b = reflective flag
+    if (reflective && reflection.a > 0.0) {
         // The reflection replaces the lit surface by the Fresnel term (Schlick, F0 from the material)
-        // times the reflector's reflectance.
+        // times the reflector's reflectance (or, off reflector rectangles, the surface's).
         float depth = texelFetch(depthTex, pix, 0).r;
         vec3 world = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depth);
         vec3 n = normalize(texelFetch(normalTex, pix, 0).xyz);
         vec3 albedo = texelFetch(albedoTex, pix, 0).rgb;
-        float metallic = texelFetch(materialTex, pix, 0).g;
+        float metallic = material.g;
         float nv = max(dot(n, normalize(frame.cameraPos.xyz - world)), 0.0);
-        vec3 weight = fresnelSchlick(nv, mix(vec3(0.04), albedo, metallic)) * reflectors[id - 1u].reflectance;
+        float reflectance = id != 0u ? reflectors[id - 1u].reflectance : surfaceReflectance(material.r);
+        vec3 weight = fresnelSchlick(nv, mix(vec3(0.04), albedo, metallic)) * reflectance;
         c = mix(c, reflection.rgb, weight);
     }
 #endif

@@ -16,7 +16,7 @@ TileClassifyPass::TileClassifyPass(const vk::Context& ctx) : ctx_(ctx) {
                            VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                            VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
     layout.pushConstantBytes = sizeof(gpu::TileClassifyPush);
-    pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(tile_classify_comp), layout, "ppr.classify");
+    pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(tile_classify_comp), layout, "tiles.classify");
 }
 
 TileLists TileClassifyPass::add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::BufferHandle stats,
@@ -24,15 +24,15 @@ TileLists TileClassifyPass::add(graph::RenderGraph& g, const FrameInputs& in, co
     TileLists t;
     t.tilesX = gpu::pprTilesCovering(in.extent.width);
     t.tilesY = gpu::pprTilesCovering(in.extent.height);
-    graph::BufferHandle args = g.createBuffer("ppr.tile_args", {sizeof(gpu::TileDispatchArgs) * gpu::kTileClassCount});
-    graph::BufferHandle lists = g.createBuffer("ppr.tile_lists", {sizeof(uint32_t) * gpu::kTileClassCount * t.tileCount()});
+    graph::BufferHandle args = g.createBuffer("tiles.args", {sizeof(gpu::TileDispatchArgs) * gpu::kTileClassCount});
+    graph::BufferHandle lists = g.createBuffer("tiles.lists", {sizeof(uint32_t) * gpu::kTileClassCount * t.tileCount()});
 
     // Empty lists (x = 0, y = z = 1) and zero counters; vkCmdUpdateBuffer/FillBuffer are transfer commands.
     struct Clear {
         graph::BufferHandle args, stats;
     };
     const Clear& cleared = g.addPass<Clear>(
-        "ppr.tiles.clear", graph::QueueKind::Transfer,
+        "tiles.clear", graph::QueueKind::Transfer,
         [&](graph::PassBuilder& b, Clear& d) {
             d.args = b.transferDst(args);
             d.stats = b.transferDst(stats);
@@ -49,7 +49,7 @@ TileLists TileClassifyPass::add(graph::RenderGraph& g, const FrameInputs& in, co
     push.tilesX = t.tilesX;
     push.tileCount = t.tileCount();
     push.maxReflectorId = maxReflectorId;
-    ComputePass(g, ctx_, "ppr.classify", pipeline_)
+    ComputePass(g, ctx_, "tiles.classify", pipeline_)
         .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
         .sampled(gb.reflector, in.samplers->nearestClamp)
         .sampled(gb.material, in.samplers->nearestClamp)
@@ -63,7 +63,7 @@ TileLists TileClassifyPass::add(graph::RenderGraph& g, const FrameInputs& in, co
         graph::BufferHandle args, stats;
     };
     const Count& counted = g.addPass<Count>(
-        "ppr.tiles.count", graph::QueueKind::Transfer,
+        "tiles.count", graph::QueueKind::Transfer,
         [&](graph::PassBuilder& b, Count& d) {
             d.args = b.transferSrc(t.args);
             d.stats = b.transferDst(clearedStats);

@@ -18,8 +18,8 @@ struct TileLists {
 class TileClassifyPass {
 public:
     explicit TileClassifyPass(const vk::Context& ctx);
-    // Clears the arguments and `stats` ("ppr.tiles.clear", transfer), classifies ("ppr.classify") and
-    // copies the arguments into `stats` ("ppr.tiles.count").
+    // Clears the arguments and `stats` ("tiles.clear", transfer), classifies ("tiles.classify") and
+    // copies the arguments into `stats` ("tiles.count").
     // Reflector ids above maxReflectorId do not make a tile planar (beyond PPR's budget).
     TileLists add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::BufferHandle stats, uint32_t maxReflectorId) const;
 

@@ -1,0 +1,49 @@
+// The depth hierarchy of ssr-hiz (and PPR's fallback), host/device shared.
+//
+// Depth is stored as 1 − reverse-Z depth: 0 at the near plane, 1 at infinity (sky). Like reverse-Z
+// depth it is affine along a ray's screen-space segment, and the nearest surface in a cell is the
+// minimum, so every level is a min-reduction of the one below (Uludag 2014).
+//
+// Levels live side by side in one r32f atlas image: level 0 at the origin, levels 1.. stacked in a
+// column to its right. The screen is padded up to a multiple of the coarsest cell so every level is
+// exactly half the one below: level L's texel c covers level-0 texels [c·2^L, (c+1)·2^L), with no
+// partial cells at the edges. Padding texels hold 1 (nothing there).
+#ifndef PPR_HIZ_H
+#define PPR_HIZ_H
+#include "shader/shared.h"
+
+PPR_CONST(uint, kHizLevels, 7u)        // levels 0..6: the coarsest cell is 64 px
+PPR_CONST(float, kHizEmpty, 1.0f)      // sky and padding
+PPR_CONST(uint, kHizGroupSize, 16u)
+
+PPR_BEGIN
+struct HizBuildPush {
+    ivec2 srcOrigin;  // the level below in the atlas (level ≥ 1)
+    ivec2 dstOrigin;  // the level written
+    uvec2 dstSize;    // its size in texels
+    uint level;       // 0: from the depth buffer
+    uint pad;
+};
+PPR_END
+PPR_SIZE_CHECK(HizBuildPush, 32);
+
+PPR_BEGIN
+// The screen padded up to a multiple of the coarsest cell.
+PPR_INLINE uvec2 hizPaddedSize(uvec2 screen) {
+    uint cell = 1u << (kHizLevels - 1u);
+    return ((screen + uvec2(cell - 1u)) / cell) * cell;
+}
+PPR_INLINE uvec2 hizLevelSize(uvec2 padded, uint level) { return uvec2(padded.x >> level, padded.y >> level); }
+// Top-left texel of a level in the atlas.
+PPR_INLINE ivec2 hizLevelOrigin(uvec2 padded, uint level) {
+    if (level == 0u) return ivec2(0, 0);
+    int y = 0;
+    for (uint l = 1u; l < level; ++l) y += int(padded.y >> l);
+    return ivec2(int(padded.x), y);
+}
+PPR_INLINE uvec2 hizAtlasSize(uvec2 padded) { return uvec2(padded.x + padded.x / 2u, padded.y); }
+// Level-0 value of a depth-buffer sample (reverse-Z, 0 = sky).
+PPR_INLINE float hizFromReverseZ(float reverseZ) { return 1.0f - reverseZ; }
+PPR_END
+
+#endif

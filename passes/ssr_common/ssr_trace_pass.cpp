@@ -1,0 +1,78 @@
+#include "ssr_common/ssr_trace_pass.hpp"
+
+#include "common/clear_pass.hpp"
+#include "common/compute_pass.hpp"
+#include "ppr_common/tiles.h"
+
+namespace ppr::passes {
+
+SsrTracePass::SsrTracePass(const vk::Context& ctx, shader::Spirv spirv, std::string name, bool usesHiz)
+    : ctx_(ctx), name_(std::move(name)), usesHiz_(usesHiz) {
+    shader::PipelineLayoutDesc layout;
+    layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,         VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                           VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                           VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                           VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,         VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                           VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
+    if (usesHiz_) layout.pushBindings.push_back(VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);
+    layout.pushConstantBytes = sizeof(gpu::SsrPush);
+    pipeline_ = shader::createComputePipeline(ctx, spirv, layout, name_);
+}
+
+graph::ImageHandle SsrTracePass::trace(graph::RenderGraph& g, const FrameInputs& in, const SsrInputs& inputs, graph::ImageHandle target,
+                                       const std::string& passName, uint32_t pixelClasses, std::optional<uint32_t> listClass,
+                                       bool fresh) const {
+    gpu::SsrPush push{};
+    push.maxDistance = inputs.params.maxDistance;
+    push.thickness = inputs.params.thickness;
+    push.thicknessScale = inputs.params.thicknessScale;
+    push.maxSteps = inputs.params.maxSteps;
+    push.pixelClasses = pixelClasses;
+    push.tileCount = inputs.tiles->tileCount();
+    push.hizLevels = inputs.hizLevels;
+    if (listClass) {
+        push.flags |= gpu::kSsrIndirect;
+        push.listClass = *listClass;
+    } else if (fresh) {
+        push.flags |= gpu::kSsrWriteAll;
+    }
+    const GBuffer& gb = *inputs.gbuffer;
+    const VkSampler point = in.samplers->nearestClamp;
+    graph::ImageHandle out;
+    ComputePass pass(g, ctx_, passName, pipeline_);
+    pass.uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
+        .sampled(gb.depth, point)
+        .sampled(gb.normal, point)
+        .sampled(gb.material, point)
+        .sampled(gb.reflector, point)
+        .sampled(inputs.sceneColor, in.samplers->linearClamp)
+        .hostStorage(inputs.reflectors)
+        .storageRead(inputs.tiles->lists);
+    // A whole-screen pass into a fresh image writes every pixel; otherwise untouched pixels are kept.
+    if (fresh && !listClass) pass.storageWrite(target, &out);
+    else pass.storageReadWrite(target, &out);
+    if (usesHiz_) pass.storageRead(*inputs.hiz);
+    pass.push(push);
+    if (listClass) pass.dispatchIndirect(inputs.tiles->args, sizeof(gpu::TileDispatchArgs) * *listClass);
+    else pass.dispatch(in.extent, gpu::kPprTileSize);
+    return out;
+}
+
+graph::ImageHandle SsrTracePass::addTechnique(graph::RenderGraph& g, const FrameInputs& in, const SsrInputs& inputs) const {
+    graph::ImageHandle image = g.createImage("reflection", {in.extent.width, in.extent.height, kReflectionFormat, 1});
+    const uint32_t all = (1u << gpu::kTileClassPlanar) | (1u << gpu::kTileClassOther);
+    if (!inputs.indirect) return trace(g, in, inputs, image, name_, all, std::nullopt, true);
+    // Tiles in neither list hold no reflective pixel: "no reflection" (all zero), as the whole-screen
+    // pass writes there. A tile in both lists has each pixel shaded by exactly one of the passes.
+    image = addClearPass(g, name_ + ".clear", image, VkClearColorValue{});
+    image = trace(g, in, inputs, image, name_ + ".planar", 1u << gpu::kTileClassPlanar, gpu::kTileClassPlanar, false);
+    return trace(g, in, inputs, image, name_ + ".other", 1u << gpu::kTileClassOther, gpu::kTileClassOther, false);
+}
+
+graph::ImageHandle SsrTracePass::addFallback(graph::RenderGraph& g, const FrameInputs& in, const SsrInputs& inputs,
+                                             graph::ImageHandle reflection, const std::string& passName) const {
+    const std::optional<uint32_t> list = inputs.indirect ? std::optional<uint32_t>(gpu::kTileClassOther) : std::nullopt;
+    return trace(g, in, inputs, reflection, passName, 1u << gpu::kTileClassOther, list, false);
+}
+
+}  // namespace ppr::passes
