@@ -68,13 +68,6 @@ struct Measured {
     CaptureResult last;  // the last frame (image, reflection when asked, counters)
 };
 
-double techniqueSum(const std::string& technique, const std::map<std::string, double>& passMs) {
-    double sum = 0.0;
-    for (const auto& [name, ms] : passMs)
-        if (isTechniquePass(technique, name)) sum += ms;
-    return sum;
-}
-
 double passOr0(const std::map<std::string, double>& m, const std::string& name) {
     auto it = m.find(name);
     return it == m.end() ? 0.0 : it->second;
@@ -106,7 +99,14 @@ public:
 
 private:
     bool wants(const std::string& sweep) const { return std::find(o_.sweeps.begin(), o_.sweeps.end(), sweep) != o_.sweeps.end(); }
-    std::vector<std::string> techniqueList() const { return o_.techniques.empty() ? techniqueNames() : o_.techniques; }
+    // The --technique ones (each once), else every technique but `none` (which costs nothing).
+    std::vector<std::string> techniqueList() const {
+        const bool all = o_.techniques.empty();
+        std::vector<std::string> list;
+        for (const std::string& t : all ? techniqueNames() : o_.techniques)
+            if (!(all && t == "none") && std::find(list.begin(), list.end(), t) == list.end()) list.push_back(t);
+        return list;
+    }
     bool hasPlanar() const {
         const auto list = techniqueList();
         return std::find(list.begin(), list.end(), "planar") != list.end();
@@ -149,11 +149,12 @@ private:
             BenchTechnique row;
             row.name = t;
             row.passMs = m.passMs;
+            row.passOrder = m.last.passOrder;
             row.frameMs = m.frameMs;
             row.techniqueMs = techniqueSum(t, m.passMs);
             if (t != "planar") {
                 FloatImage reflection = m.last.reflection;
-                if (reflection.rgba.empty()) {  // technique none: no reflection anywhere
+                if (reflection.rgba.empty()) {  // no reflection image (none): no reflection anywhere
                     reflection.width = extent_.width;
                     reflection.height = extent_.height;
                     reflection.rgba.assign(size_t(extent_.width) * extent_.height * 4, 0.0f);
@@ -209,7 +210,7 @@ private:
                 row.indirect = indirect;
                 row.reflectMs = passOr0(m.passMs, "ppr.reflect");
                 row.clearMs = passOr0(m.passMs, "ppr.reflection.clear");
-                row.classifyMs = passOr0(m.passMs, "ppr.classify");
+                row.classifyMs = passOr0(m.passMs, "tiles.classify");
                 if (m.last.pprStats) row.reflectiveTiles = double(m.last.pprStats->dispatch[gpu::kTileClassPlanar].x) / tiles;
                 results_.coverage.push_back(row);
             }

@@ -1,8 +1,12 @@
 #include "bench_report.hpp"
 
 #include "bench_plot.hpp"
+#include "techniques.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <functional>
+#include <set>
 
 namespace ppr::app {
 namespace {
@@ -12,6 +16,8 @@ std::string fixed(double v, int digits) {
     std::snprintf(buf, sizeof buf, "%.*f", digits, v);
     return buf;
 }
+
+std::string fixedOr(const std::optional<double>& v, int digits, const std::string& absent) { return v ? fixed(*v, digits) : absent; }
 
 const BenchReflectorRow* findRow(const BenchResults& r, uint32_t n, bool tiles) {
     for (const BenchReflectorRow& row : r.reflectors)
@@ -39,24 +45,163 @@ std::vector<std::string> coverageCameras(const BenchResults& r) {
     return out;
 }
 
+nlohmann::json numberOrNull(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
+
+// Sum of the passes `counts` selects.
+double sumPasses(const std::map<std::string, double>& passMs, const std::function<bool(const std::string&)>& counts) {
+    double sum = 0.0;
+    for (const auto& [name, ms] : passMs)
+        if (counts(name)) sum += ms;
+    return sum;
+}
+
+const BenchTechnique* findTechnique(const BenchResults& r, const std::string& name) {
+    for (const BenchTechnique& t : r.techniques)
+        if (t.name == name) return &t;
+    return nullptr;
+}
+
+// The PPR slides' timings (GTX 1070, 3840x2160), for context only: another GPU, scene and size.
+// ssr-hiz's is its 3.2 ms trace plus the 0.35 ms hierarchy build, as our GPU ms includes hiz.* too.
+struct SlideTiming {
+    const char* technique;
+    double ms;
+    std::optional<double> hizBuildMs;
+};
+const SlideTiming kSlides[] = {{"ppr", 0.95, {}}, {"ssr-brute", 20.6, {}}, {"ssr-lowq", 0.95, {}}, {"ssr-hiz", 3.55, 0.35}};
+constexpr double kSlidesPprMs = 0.95;
+constexpr const char* kSlidesDevice = "NVIDIA GeForce GTX 1070";
+constexpr uint32_t kSlidesSize[] = {3840, 2160};
+
+nlohmann::json slidesJson() {
+    nlohmann::json results = nlohmann::json::object();
+    for (const SlideTiming& s : kSlides) {
+        nlohmann::json e = {{"gpu_ms", s.ms}, {"ratio_to_ppr", s.ms / kSlidesPprMs}};
+        if (s.hizBuildMs) e["hiz_build_ms"] = *s.hizBuildMs;
+        results[s.technique] = e;
+    }
+    return {{"device", kSlidesDevice}, {"size", kSlidesSize}, {"results", results}};
+}
+
+nlohmann::json techniqueJson(const BenchResults& r, const BenchTechnique& t) {
+    nlohmann::json e = {{"gpu_ms", t.techniqueMs}, {"frame_gpu_ms", t.frameMs}, {"passes", t.passMs}};
+    if (const auto ratio = benchRatio(r, t.techniqueMs, "ppr")) e["ratio_to_ppr"] = *ratio;
+    if (const auto ratio = benchRatio(r, t.techniqueMs, "floor")) e["ratio_to_floor"] = *ratio;
+    if (const auto build = hizBuildMs(t)) e["hiz_build_ms"] = *build;
+    e["psnr_db"] = numberOrNull(t.psnrDb);
+    e["psnr_reflection_db"] = numberOrNull(t.psnrReflectionDb);
+    e["coverage"] = numberOrNull(t.coverage);
+    return e;
+}
+
+std::string techniquesTable(const BenchResults& r) {
+    std::string md = "| technique | GPU ms | × PPR | × floor | PSNR dB | reflection PSNR dB | coverage | frame ms |\n"
+                     "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    // GPU ms and its ratios: the cells every row of this table starts with.
+    auto cost = [&](const std::string& label, double ms) {
+        return "| " + label + " | " + fixed(ms, 2) + " | " + fixedOr(benchRatio(r, ms, "ppr"), 2, "–") + " | " +
+               fixedOr(benchRatio(r, ms, "floor"), 2, "–") + " | ";
+    };
+    for (const BenchTechnique& t : r.techniques) {
+        md += cost(t.name, t.techniqueMs) + fixedOr(t.psnrDb, 2, "ref") + " | " + fixedOr(t.psnrReflectionDb, 2, "ref") + " | " +
+              fixedOr(t.coverage, 4, "ref") + " | " + fixed(t.frameMs, 2) + " |\n";
+        // The hierarchy build alone, as the slides quote it apart from the trace.
+        if (const auto build = hizBuildMs(t)) md += cost("↳ " + t.name + " hierarchy build (hiz.*)", *build) + "| | | |\n";
+    }
+    return md;
+}
+
+std::vector<std::string> executionOrder(const BenchTechnique& t) {
+    if (!t.passOrder.empty()) return t.passOrder;
+    std::vector<std::string> order;
+    for (const auto& [name, ms] : t.passMs) order.push_back(name);
+    return order;
+}
+
+// Every technique's passes in one execution order: a pass comes after those that run before it in
+// any technique; ties (and disagreements) go to the pass seen first, so the shared scene passes lead
+// and each technique's own passes follow in column order.
+std::vector<std::string> passRows(const BenchResults& r) {
+    std::vector<std::string> seen;
+    std::map<std::string, std::set<std::string>> predecessors;  // pass → the passes right before it somewhere
+    for (const BenchTechnique& t : r.techniques) {
+        const std::vector<std::string> order = executionOrder(t);
+        for (size_t i = 0; i < order.size(); ++i) {
+            if (std::find(seen.begin(), seen.end(), order[i]) == seen.end()) seen.push_back(order[i]);
+            if (i > 0) predecessors[order[i]].insert(order[i - 1]);
+        }
+    }
+    std::vector<std::string> rows;
+    std::set<std::string> placed;
+    auto isPlaced = [&](const std::string& p) { return placed.count(p) > 0; };
+    auto isReady = [&](const std::string& p) { return !isPlaced(p) && std::all_of(predecessors[p].begin(), predecessors[p].end(), isPlaced); };
+    while (rows.size() < seen.size()) {
+        auto next = std::find_if(seen.begin(), seen.end(), isReady);
+        if (next == seen.end()) next = std::find_if_not(seen.begin(), seen.end(), isPlaced);  // orders disagree: a cycle
+        rows.push_back(*next);
+        placed.insert(*next);
+    }
+    return rows;
+}
+
+std::string passesTable(const BenchResults& r) {
+    std::string md = "| pass |", rule = "|---|";
+    for (const BenchTechnique& t : r.techniques) {
+        md += " " + t.name + " |";
+        rule += "---:|";
+    }
+    md += "\n" + rule + "\n";
+    for (const std::string& pass : passRows(r)) {
+        md += "| " + pass + " |";
+        for (const BenchTechnique& t : r.techniques) {
+            const auto it = t.passMs.find(pass);
+            const std::string ms = it == t.passMs.end() ? "" : fixed(it->second, 3);
+            md += " " + (!ms.empty() && isTechniquePass(t.name, pass) ? "**" + ms + "**" : ms) + " |";
+        }
+        md += "\n";
+    }
+    return md;
+}
+
+std::string slidesTable(const BenchResults& r) {
+    std::string md = "| technique | slides GTX 1070 4K ms | slides × PPR | ours ms | ours × PPR |\n|---|---:|---:|---:|---:|\n";
+    auto line = [&](const std::string& label, double slidesMs, const std::optional<double>& oursMs) {
+        md += "| " + label + " | " + fixed(slidesMs, 2) + " | " + fixed(slidesMs / kSlidesPprMs, 2) + " | " + fixedOr(oursMs, 2, "–") + " | " +
+              fixedOr(oursMs ? benchRatio(r, *oursMs, "ppr") : std::nullopt, 2, "–") + " |\n";
+    };
+    for (const SlideTiming& s : kSlides) {
+        const BenchTechnique* t = findTechnique(r, s.technique);
+        line(s.technique + std::string(s.hizBuildMs ? " (with hierarchy build)" : ""), s.ms,
+             t ? std::optional<double>(t->techniqueMs) : std::nullopt);
+        if (s.hizBuildMs) line(std::string("↳ ") + s.technique + " hierarchy build", *s.hizBuildMs, t ? hizBuildMs(*t) : std::nullopt);
+    }
+    return md;
+}
+
 }  // namespace
+
+double techniqueSum(const std::string& technique, const std::map<std::string, double>& passMs) {
+    return sumPasses(passMs, [&](const std::string& pass) { return isTechniquePass(technique, pass); });
+}
+
+std::optional<double> hizBuildMs(const BenchTechnique& t) {
+    auto isHiz = [](const std::string& pass) { return pass.rfind("hiz.", 0) == 0; };
+    if (std::none_of(t.passMs.begin(), t.passMs.end(), [&](const auto& p) { return isHiz(p.first); })) return std::nullopt;
+    return sumPasses(t.passMs, isHiz);
+}
+
+std::optional<double> benchRatio(const BenchResults& r, double ms, const std::string& reference) {
+    const BenchTechnique* ref = findTechnique(r, reference);
+    if (!ref || ref->techniqueMs <= 0.0) return std::nullopt;
+    return ms / ref->techniqueMs;
+}
 
 nlohmann::json benchJson(const BenchResults& r) {
     nlohmann::json j = r.header;
     if (!r.techniques.empty()) {
         nlohmann::json t = nlohmann::json::object();
-        double pprMs = 0.0;
-        for (const BenchTechnique& row : r.techniques)
-            if (row.name == "ppr") pprMs = row.techniqueMs;
-        for (const BenchTechnique& row : r.techniques) {
-            nlohmann::json e = {{"gpu_ms", row.techniqueMs}, {"frame_gpu_ms", row.frameMs}, {"passes", row.passMs}};
-            if (pprMs > 0.0) e["ratio_to_ppr"] = row.techniqueMs / pprMs;
-            e["psnr_db"] = row.psnrDb ? nlohmann::json(*row.psnrDb) : nlohmann::json(nullptr);
-            e["psnr_reflection_db"] = row.psnrReflectionDb ? nlohmann::json(*row.psnrReflectionDb) : nlohmann::json(nullptr);
-            e["coverage"] = row.coverage ? nlohmann::json(*row.coverage) : nlohmann::json(nullptr);
-            t[row.name] = e;
-        }
-        j["techniques"] = {{"camera", r.techniquesCamera}, {"results", t}};
+        for (const BenchTechnique& row : r.techniques) t[row.name] = techniqueJson(r, row);
+        j["techniques"] = {{"camera", r.techniquesCamera}, {"results", t}, {"slides", slidesJson()}};
     }
     if (!r.reflectors.empty()) {
         nlohmann::json rows = nlohmann::json::array();
@@ -91,18 +236,15 @@ std::string benchMarkdown(const BenchResults& r, const std::string& commandLine)
           std::to_string(h["size"][0].get<uint32_t>()) + "x" + std::to_string(h["size"][1].get<uint32_t>()) + ", median of " +
           std::to_string(h.value("frames", 0u)) + " frames after " + std::to_string(h.value("warmup", 0u)) + " warm-up frames.\n\n";
     if (!r.techniques.empty()) {
-        double pprMs = 0.0;
-        for (const BenchTechnique& t : r.techniques)
-            if (t.name == "ppr") pprMs = t.techniqueMs;
         md += "## Techniques (camera " + r.techniquesCamera + ")\n\n";
-        md += "| technique | technique ms | frame ms | × PPR | PSNR dB | reflection PSNR dB | coverage |\n|---|---:|---:|---:|---:|---:|---:|\n";
-        for (const BenchTechnique& t : r.techniques) {
-            md += "| " + t.name + " | " + fixed(t.techniqueMs, 2) + " | " + fixed(t.frameMs, 2) + " | " +
-                  (pprMs > 0.0 ? fixed(t.techniqueMs / pprMs, 2) : std::string("–")) + " | " + (t.psnrDb ? fixed(*t.psnrDb, 2) : "ref") +
-                  " | " + (t.psnrReflectionDb ? fixed(*t.psnrReflectionDb, 2) : "ref") + " | " +
-                  (t.coverage ? fixed(*t.coverage, 4) : "ref") + " |\n";
-        }
-        md += "\n";
+        md += "GPU ms: the technique's own passes (bold below; tile classification `tiles.*` for ppr and ssr-*, the depth "
+              "hierarchy `hiz.*` for ssr-hiz and ppr's fallback). × PPR / × floor: GPU ms over ppr's / floor's (floor: the "
+              "least any screen-space reflection costs; it draws none). PSNR and coverage against planar; frame ms: the whole "
+              "frame.\n\n";
+        md += techniquesTable(r) + "\n";
+        md += "### Per pass (GPU ms; bold: counted in the technique's GPU ms)\n\n" + passesTable(r) + "\n";
+        md += std::string("### Against the slides (") + kSlidesDevice + " at " + std::to_string(kSlidesSize[0]) + "x" +
+              std::to_string(kSlidesSize[1]) + "; another GPU, scene and size: compare the ratios)\n\n" + slidesTable(r) + "\n";
     }
     if (!r.reflectors.empty()) {
         md += "## Reflector count (" + r.reflectorsScene + ", camera " + r.reflectorsCamera + "): `ppr.project` ms\n\n";

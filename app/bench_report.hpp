@@ -14,9 +14,10 @@ namespace ppr::app {
 
 struct BenchTechnique {
     std::string name;
-    double techniqueMs = 0.0;  // the technique's own passes
+    double techniqueMs = 0.0;  // the technique's own passes (techniqueSum)
     double frameMs = 0.0;      // the whole frame
     std::map<std::string, double> passMs;
+    std::vector<std::string> passOrder;  // execution order; empty = passMs' (alphabetical) order
     std::optional<double> psnrDb, psnrReflectionDb, coverage;  // against planar (absent for planar itself)
 };
 
@@ -43,6 +44,14 @@ struct BenchResults {
     std::string coverageScene;
     std::vector<BenchCoverageRow> coverage;
 };
+
+// A technique's own cost: the passes isTechniquePass counts for it.
+double techniqueSum(const std::string& technique, const std::map<std::string, double>& passMs);
+// The depth hierarchy build alone (hiz.* passes); absent when the technique built none.
+std::optional<double> hizBuildMs(const BenchTechnique& technique);
+// `ms` over the GPU ms of the technique named `reference` (ppr, floor); absent when the reference
+// was not measured or took no time.
+std::optional<double> benchRatio(const BenchResults& results, double ms, const std::string& reference);
 
 nlohmann::json benchJson(const BenchResults& results);
 std::string benchMarkdown(const BenchResults& results, const std::string& commandLine);

@@ -33,15 +33,18 @@ std::string usage() {
            "  view                 interactive window (default when a display is present)\n"
            "  capture              render headless, write final.png + report.json (default without a display)\n"
            "  compare              render techniques and the planar ground truth; write contact.png + metrics.json\n"
-           "  bench                time techniques and PPR's scaling sweeps; write bench.json, bench.md, bench.png\n"
+           "  bench                time the techniques on one camera (default: all but none; planar is the reference),\n"
+           "                       against PPR and the floor, and PPR's scaling sweeps; write bench.json, bench.md, bench.png\n"
            "options:\n"
            "  --scene FILE         .gltf or .glb, or stress:N (N = 1..4096 mirror tiles; default: the built-in default scene)\n"
            "  --reflectors FILE    reflector JSON (default: <scene>.reflectors.json or glTF node extras)\n"
            "  --camera NAME|x,y,z,yawDeg,pitchDeg[,fovYDeg]\n"
            "                       capture: default = every named camera; view: the first one\n"
            "  --size WxH           default 1280x720 (16..8192 per side; ppr: at most 4096, its offsets are 12-bit)\n"
-           "  --technique T        ppr (default) | planar (ground truth) | none; compare: repeatable\n"
-           "  --set key=value      repeatable; keys: debug, exposure, shadowres, holes, filter, antibleed, tiles, indirect\n"
+           "  --technique T        ppr (default) | ssr-brute | ssr-lowq | ssr-hiz | ssr-linear | planar (ground truth)\n"
+           "                       | floor (cost floor, draws no reflection) | none; compare and bench: repeatable\n"
+           "  --set key=value      repeatable; keys: debug, exposure, shadowres, holes, filter, antibleed, tiles, indirect,\n"
+           "                       fallback, ssr_distance, ssr_thickness, ssr_thickness_scale, ssr_steps (docs/ssr.md)\n"
            "  --frames N           frames to render (capture default 5: median GPU times over them; bench default 10)\n"
            "  --warmup N           bench: frames rendered before measuring (default 3)\n"
            "  --sweep S            bench, repeatable: techniques | reflectors | coverage (default: all three)\n"
@@ -109,8 +112,11 @@ Options parseCommandLine(int argc, const char* const* argv) {
     }
     if (o.mode == Mode::Bench && o.sweeps.empty()) o.sweeps = benchSweepNames();
     if (o.mode == Mode::Compare && o.techniques.empty()) o.techniques = {"ppr"};
-    const bool usesPpr = o.mode == Mode::Compare ? std::find(o.techniques.begin(), o.techniques.end(), "ppr") != o.techniques.end()
-                                                 : o.technique == "ppr";
+    auto listsPpr = [&] { return std::find(o.techniques.begin(), o.techniques.end(), "ppr") != o.techniques.end(); };
+    bool usesPpr = o.technique == "ppr";
+    if (o.mode == Mode::Compare) usesPpr = listsPpr();
+    // bench: the reflector and coverage sweeps always run PPR; the techniques sweep runs all by default.
+    if (o.mode == Mode::Bench) usesPpr = o.techniques.empty() || listsPpr() || o.sweeps != std::vector<std::string>{"techniques"};
     if (usesPpr && std::max(o.width, o.height) > kPprMaxSize)
         throw std::runtime_error("--size " + std::to_string(o.width) + "x" + std::to_string(o.height) +
                                  ": PPR encodes offsets with 12-bit integer parts, so it runs at most " + std::to_string(kPprMaxSize) +

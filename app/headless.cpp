@@ -1,5 +1,7 @@
 #include "headless.hpp"
 
+#include "hiz/hiz.h"
+
 #include <algorithm>
 #include <cstring>
 
@@ -136,6 +138,58 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
     }
     for (auto& [name, values] : perPass) result.passMedianMs[name] = median(values);
     result.totalMedianMs = median(totals);
+    return result;
+}
+
+DepthCapture HeadlessRenderer::captureDepth(const scene::CameraPose& camera, VkExtent2D extent) {
+    ensureTargets(extent);
+    // Frames still in flight finish first: this frame reuses slot 0.
+    for (uint32_t s = 0; s < Renderer::kFramesInFlight; ++s)
+        if (slotBusy_[s]) {
+            VK_CHECK(vkWaitForFences(ctx_.device(), 1, &fences_[s], VK_TRUE, UINT64_MAX));
+            slotBusy_[s] = false;
+        }
+    const glm::uvec2 atlas = gpu::hizAtlasSize(gpu::hizPaddedSize({extent.width, extent.height}));
+    const VkDeviceSize depthBytes = VkDeviceSize(extent.width) * extent.height * sizeof(float);
+    const VkDeviceSize atlasBytes = VkDeviceSize(atlas.x) * atlas.y * sizeof(float);
+    vk::Buffer depthBuffer = vk::createBuffer(ctx_, depthBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "depth readback");
+    vk::Buffer atlasBuffer = vk::createBuffer(ctx_, atlasBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "hiz readback");
+    graph::ExternalBuffer depthImport{depthBuffer.buffer, {depthBytes}, {}, graph::Access::HostRead};
+    graph::ExternalBuffer atlasImport{atlasBuffer.buffer, {atlasBytes}, {}, graph::Access::HostRead};
+
+    const uint32_t slot = 0;
+    VK_CHECK(vkResetFences(ctx_.device(), 1, &fences_[slot]));
+    VkCommandBuffer cmd = cmds_[slot];
+    VK_CHECK(vkResetCommandBuffer(cmd, 0));
+    VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    VK_CHECK(vkBeginCommandBuffer(cmd, &bi));
+    FrameRequest req;
+    req.camera = camera;
+    req.extent = extent;
+    req.target = &targetImport_;
+    req.depthReadback = &depthImport;
+    req.hizReadback = &atlasImport;
+    const FrameRecord rec = renderer_.record(cmd, slot, req);
+    VK_CHECK(vkEndCommandBuffer(cmd));
+    vk::submit(ctx_, cmd, fences_[slot]);
+    VK_CHECK(vkWaitForFences(ctx_.device(), 1, &fences_[slot], VK_TRUE, UINT64_MAX));
+
+    DepthCapture result;
+    result.width = extent.width;
+    result.height = extent.height;
+    result.depth.resize(size_t(extent.width) * extent.height);
+    vmaInvalidateAllocation(ctx_.allocator(), depthBuffer.allocation, 0, VK_WHOLE_SIZE);
+    std::memcpy(result.depth.data(), depthBuffer.mapped, depthBytes);
+    if (rec.hizCopied) {
+        result.atlasWidth = atlas.x;
+        result.atlasHeight = atlas.y;
+        result.hizAtlas.resize(size_t(atlas.x) * atlas.y);
+        vmaInvalidateAllocation(ctx_.allocator(), atlasBuffer.allocation, 0, VK_WHOLE_SIZE);
+        std::memcpy(result.hizAtlas.data(), atlasBuffer.mapped, atlasBytes);
+    }
+    vk::destroyBuffer(ctx_, depthBuffer);
+    vk::destroyBuffer(ctx_, atlasBuffer);
     return result;
 }
 

@@ -24,6 +24,14 @@ struct CaptureResult {
     std::optional<gpu::PprFrameStats> pprStats;  // tile and culling counts of the last frame (PPR only)
 };
 
+// Tests: one frame's G-buffer depth and, when the technique builds it, its depth hierarchy.
+struct DepthCapture {
+    uint32_t width = 0, height = 0;
+    std::vector<float> depth;                 // reverse-Z (D32), width × height, rows top to bottom
+    uint32_t atlasWidth = 0, atlasHeight = 0;  // 0x0 when the frame built no hierarchy
+    std::vector<float> hizAtlas;              // r32f, hiz/hiz.h layout (texels outside the levels undefined)
+};
+
 class HeadlessRenderer {
 public:
     HeadlessRenderer(const vk::Context& ctx, Renderer& renderer);
@@ -35,6 +43,8 @@ public:
     // reflection image too when `readReflection`).
     CaptureResult capture(const scene::CameraPose& camera, VkExtent2D extent, uint32_t frames, bool dumpGraph = false,
                           bool readReflection = false);
+    // Renders one frame of the camera at the extent and reads back its depth and depth hierarchy.
+    DepthCapture captureDepth(const scene::CameraPose& camera, VkExtent2D extent);
 
 private:
     void ensureTargets(VkExtent2D extent);

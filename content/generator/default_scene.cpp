@@ -111,6 +111,7 @@ private:
 struct Materials {
     int floor, brick, sandstone, marble, water, mirror, glass, glassBack, frame;
     int red, blue, yellow, green, teal, orange, white, terracotta, soil, leaves;
+    int chrome, satinSteel;  // reflective but curved: no reflector rectangle fits them
 };
 
 // Texture repeat sizes in metres: 0.75 m floor slabs, 0.3 × 0.15 m bricks, 0.5 × 0.25 m blocks.
@@ -173,6 +174,8 @@ Materials createMaterials(GltfWriter& w, const std::string& dir) {
     M.terracotta = plain("terracotta", {0.55f, 0.18f, 0.08f, 1.0f}, 0.8f);
     M.soil = plain("soil", {0.06f, 0.035f, 0.02f, 1.0f}, 1.0f);
     M.leaves = plain("leaves", {0.07f, 0.32f, 0.05f, 1.0f}, 0.7f);
+    M.chrome = plain("chrome", {0.92f, 0.92f, 0.94f, 1.0f}, 0.03f, 1.0f, true);
+    M.satinSteel = plain("steel_satin", {0.75f, 0.72f, 0.68f, 1.0f}, 0.3f, 1.0f, true);
     return M;
 }
 
@@ -376,6 +379,15 @@ void buildProps(Layout& L, const Materials& M) {
     MeshData white;
     addBox(white, {-0.6f, 0.0f, -0.3f}, {0.6f, 0.9f, 0.3f}, 1.0f, AllFaces & ~NegY);
     L.object("bench_white", L.mesh(white, "bench_white", M.white), {8.0, 0, -3.0}, 60.0);
+
+    // Reflective surfaces PPR cannot take (curved, one of them rough): the screen-space fallback
+    // shades them. A mirror ball between the large and the small puddles, a satin steel post by the
+    // blue sphere.
+    MeshData chromeBall, post;
+    addSphere(chromeBall, {0.0f, 0.0f, 0.0f}, 0.5f, 64, 32, 1.0f);
+    L.object("sphere_chrome", L.mesh(chromeBall, "sphere_chrome", M.chrome), {0.3, 0.5, 0.8});
+    addCylinder(post, {0.0f, 0.0f, 0.0f}, 0.28f, 0.28f, 1.3f, 48, false, true, 1.0f);
+    L.object("post_steel", L.mesh(post, "post_steel", M.satinSteel), {3.3, 0, -0.9});
 
     glassPanel(L, M, "glass_east", {10.5, 1.45, -1.0}, {0, 0, 1}, {-1, 0, 0}, 2.5f, 1.2f);
     glassPanel(L, M, "glass_oblique", {7.0, 1.45, -7.5}, {0.8, 0, 0.6}, {-0.6, 0, 0.8}, 1.8f, 1.2f);

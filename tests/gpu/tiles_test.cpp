@@ -135,13 +135,20 @@ TEST(PprBenchCli, WritesTablesAndPlot) {
     const auto dir = tempDir("bench-cli");
     const RunResult r = runPpr("bench --size 96x54 --frames 1 --warmup 0 --validation --out " + dir.string());
     EXPECT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_NE(r.output.find("ppr bench [21/21]"), std::string::npos) << r.output;  // the progress line
+    // The progress line: 7 techniques + 12 reflector + 6 coverage configurations.
+    EXPECT_NE(r.output.find("ppr bench [25/25]"), std::string::npos) << r.output;
     const nlohmann::json bench = nlohmann::json::parse(std::ifstream(dir / "bench.json"));
     EXPECT_EQ(bench["sweeps"]["reflectors"]["rows"].size(), 12u);
     EXPECT_EQ(bench["sweeps"]["coverage"]["rows"].size(), 6u);
-    for (const char* t : {"ppr", "planar", "none"}) EXPECT_TRUE(bench["techniques"]["results"].contains(t)) << t;
-    EXPECT_TRUE(bench["techniques"]["results"]["ppr"]["psnr_db"].is_number());
-    EXPECT_GT(bench["techniques"]["results"]["ppr"]["gpu_ms"].get<double>(), 0.0);
+    const nlohmann::json& results = bench["techniques"]["results"];
+    EXPECT_EQ(results.size(), 7u);  // every technique but none
+    for (const char* t : {"ppr", "ssr-brute", "ssr-lowq", "ssr-hiz", "ssr-linear", "planar", "floor"})
+        EXPECT_TRUE(results.contains(t)) << t;
+    EXPECT_TRUE(results["ppr"]["psnr_db"].is_number());
+    EXPECT_GT(results["ppr"]["gpu_ms"].get<double>(), 0.0);
+    EXPECT_TRUE(results["ppr"]["ratio_to_floor"].is_number());
+    EXPECT_GT(results["ssr-hiz"]["hiz_build_ms"].get<double>(), 0.0);
+    EXPECT_TRUE(bench["techniques"]["slides"]["results"].contains("ssr-hiz"));
     EXPECT_TRUE(std::filesystem::exists(dir / "bench.md"));
     EXPECT_TRUE(std::filesystem::exists(dir / "bench.png"));
     EXPECT_EQ(bench["validation_errors"], 0);

@@ -146,18 +146,18 @@ grep -q '"debug": "albedo"' "$WORK/out/view-capture-1/report.json" || fail "repo
 grep -q '"technique": "ppr"' "$WORK/out/view-capture-1/report.json" || fail "report.json: the viewer should start with --technique ppr"
 note "F12 wrote $WORK/out/view-capture-1"
 
-# 3b. F3 switches the technique (ppr → planar); the next capture records it.
+# 3b. F3 switches to the next technique (ppr → ssr-brute); the next capture records it.
 xdotool key F3
 sleep 1
 xdotool key F12
 ok=""
 for _ in $(seq 1 $((STEP_TIMEOUT))); do
     alive || fail "viewer exited after F3"
-    [ -s "$WORK/out/view-capture-2/report.json" ] && { sleep 1; grep -q '"technique": "planar"' "$WORK/out/view-capture-2/report.json" && { ok=1; break; }; }
+    [ -s "$WORK/out/view-capture-2/report.json" ] && { sleep 1; grep -q '"technique": "ssr-brute"' "$WORK/out/view-capture-2/report.json" && { ok=1; break; }; }
     sleep 1
 done
-[ -n "$ok" ] || fail "F3 did not switch to the planar technique (no view-capture-2 with technique planar)"
-note "F3 switched to planar (view-capture-2)"
+[ -n "$ok" ] || fail "F3 did not switch to the next technique (no view-capture-2 with technique ssr-brute)"
+note "F3 switched to ssr-brute (view-capture-2)"
 
 # 4. Resize: the swapchain is recreated and the bigger window shows a picture over its whole width.
 xdotool windowsize "$WID" 800 450

@@ -1,0 +1,189 @@
+// Bench report: technique cost sums, ratios to PPR and the floor, the hierarchy build alone, the
+// slides' numbers, and the tables of bench.md, all from hand-made results (no GPU).
+#include "bench_report.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace ppr::app;
+
+namespace {
+
+BenchTechnique technique(const std::string& name, std::map<std::string, double> passMs, std::optional<double> psnr = 30.0) {
+    BenchTechnique t;
+    t.name = name;
+    t.passMs = std::move(passMs);
+    t.techniqueMs = techniqueSum(name, t.passMs);
+    t.frameMs = 10.0 + t.techniqueMs;
+    if (psnr) {  // absent for the reference
+        t.psnrDb = t.psnrReflectionDb = psnr;
+        t.coverage = 0.5;
+    }
+    return t;
+}
+
+// Shared scene passes cost the same everywhere and count for no technique.
+std::map<std::string, double> withScene(std::map<std::string, double> passMs) {
+    passMs["gbuffer"] = 3.0;
+    passMs["lighting"] = 2.0;
+    return passMs;
+}
+
+BenchResults results(bool withFloor = true) {
+    BenchResults r;
+    r.header = {{"device", "test device"}, {"driver", "test"}, {"size", {320, 180}}, {"frames", 2}, {"warmup", 1}};
+    r.techniquesCamera = "overview";
+    r.techniques.push_back(technique("ppr", withScene({{"ppr.project", 0.5}, {"ppr.reflect", 0.25}, {"tiles.classify", 0.05},
+                                                       {"hiz.build.0", 0.1}, {"hiz.build.1", 0.1}})));
+    r.techniques.push_back(technique("ssr-brute", withScene({{"ssr-brute", 19.95}, {"tiles.classify", 0.05}})));
+    r.techniques.push_back(technique("ssr-hiz", withScene({{"ssr-hiz", 2.0}, {"tiles.classify", 0.05}, {"hiz.build.0", 0.15},
+                                                           {"hiz.build.1", 0.1}, {"hiz.build.2", 0.05}})));
+    r.techniques.push_back(technique("planar", withScene({{"planar.gbuffer", 6.0}, {"planar.lighting", 4.0}}), std::nullopt));
+    if (withFloor) r.techniques.push_back(technique("floor", withScene({{"floor", 0.5}})));
+    return r;
+}
+
+const BenchTechnique& find(const BenchResults& r, const std::string& name) {
+    for (const BenchTechnique& t : r.techniques)
+        if (t.name == name) return t;
+    throw std::runtime_error("no technique " + name);
+}
+
+size_t count(const std::string& text, const std::string& what) {
+    size_t n = 0;
+    for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
+}  // namespace
+
+TEST(BenchReport, TechniqueSumCountsOwnTileAndHierarchyPasses) {
+    const BenchResults r = results();
+    EXPECT_DOUBLE_EQ(find(r, "ppr").techniqueMs, 1.0);  // project + reflect + tiles + hiz (the fallback's)
+    EXPECT_DOUBLE_EQ(find(r, "ssr-brute").techniqueMs, 20.0);
+    EXPECT_DOUBLE_EQ(find(r, "ssr-hiz").techniqueMs, 2.35);
+    EXPECT_DOUBLE_EQ(find(r, "planar").techniqueMs, 10.0);
+    EXPECT_DOUBLE_EQ(find(r, "floor").techniqueMs, 0.5);
+}
+
+TEST(BenchReport, HierarchyBuildIsTheSumOfHizPassesAndAbsentWithoutThem) {
+    const BenchResults r = results();
+    ASSERT_TRUE(hizBuildMs(find(r, "ssr-hiz")));
+    EXPECT_DOUBLE_EQ(*hizBuildMs(find(r, "ssr-hiz")), 0.3);
+    ASSERT_TRUE(hizBuildMs(find(r, "ppr")));
+    EXPECT_DOUBLE_EQ(*hizBuildMs(find(r, "ppr")), 0.2);
+    EXPECT_FALSE(hizBuildMs(find(r, "ssr-brute")));
+    EXPECT_FALSE(hizBuildMs(find(r, "floor")));
+}
+
+TEST(BenchReport, RatiosToPprAndFloor) {
+    const BenchResults r = results();
+    EXPECT_DOUBLE_EQ(*benchRatio(r, find(r, "ssr-brute").techniqueMs, "ppr"), 20.0);
+    EXPECT_DOUBLE_EQ(*benchRatio(r, find(r, "ppr").techniqueMs, "ppr"), 1.0);
+    EXPECT_DOUBLE_EQ(*benchRatio(r, find(r, "ppr").techniqueMs, "floor"), 2.0);
+    EXPECT_DOUBLE_EQ(*benchRatio(r, find(r, "floor").techniqueMs, "floor"), 1.0);
+    EXPECT_DOUBLE_EQ(*benchRatio(r, find(r, "planar").techniqueMs, "floor"), 20.0);
+}
+
+TEST(BenchReport, RatioIsAbsentWhenTheReferenceDidNotRunOrTookNoTime) {
+    const BenchResults noFloor = results(false);
+    EXPECT_FALSE(benchRatio(noFloor, find(noFloor, "ppr").techniqueMs, "floor"));
+    BenchResults freeFloor = results();
+    for (BenchTechnique& t : freeFloor.techniques)
+        if (t.name == "floor") t.techniqueMs = 0.0;
+    EXPECT_FALSE(benchRatio(freeFloor, find(freeFloor, "ppr").techniqueMs, "floor"));
+}
+
+TEST(BenchReport, JsonHoldsRatiosHierarchyBuildAndScores) {
+    const nlohmann::json j = benchJson(results());
+    const nlohmann::json& t = j["techniques"]["results"];
+    for (const char* name : {"ppr", "ssr-brute", "ssr-hiz", "planar", "floor"}) {
+        ASSERT_TRUE(t.contains(name)) << name;
+        for (const char* key : {"gpu_ms", "frame_gpu_ms", "passes", "ratio_to_ppr", "ratio_to_floor", "psnr_db", "psnr_reflection_db", "coverage"})
+            EXPECT_TRUE(t[name].contains(key)) << name << " " << key;
+    }
+    EXPECT_DOUBLE_EQ(t["ssr-brute"]["ratio_to_ppr"].get<double>(), 20.0);
+    EXPECT_DOUBLE_EQ(t["ppr"]["ratio_to_floor"].get<double>(), 2.0);
+    EXPECT_DOUBLE_EQ(t["ssr-hiz"]["hiz_build_ms"].get<double>(), 0.3);
+    EXPECT_DOUBLE_EQ(t["ppr"]["hiz_build_ms"].get<double>(), 0.2);
+    EXPECT_FALSE(t["ssr-brute"].contains("hiz_build_ms"));
+    EXPECT_TRUE(t["planar"]["psnr_db"].is_null());
+    EXPECT_DOUBLE_EQ(t["ssr-hiz"]["passes"]["hiz.build.2"].get<double>(), 0.05);
+}
+
+TEST(BenchReport, JsonLeavesTheFloorRatioOutWithoutTheFloor) {
+    const nlohmann::json j = benchJson(results(false));
+    for (const auto& [name, e] : j["techniques"]["results"].items()) {
+        EXPECT_FALSE(e.contains("ratio_to_floor")) << name;
+        EXPECT_TRUE(e.contains("ratio_to_ppr")) << name;
+    }
+}
+
+TEST(BenchReport, JsonHoldsTheSlidesNumbers) {
+    const nlohmann::json s = benchJson(results())["techniques"]["slides"];
+    EXPECT_EQ(s["size"], nlohmann::json({3840, 2160}));
+    EXPECT_NE(s["device"].get<std::string>().find("1070"), std::string::npos);
+    EXPECT_DOUBLE_EQ(s["results"]["ssr-brute"]["gpu_ms"].get<double>(), 20.6);
+    EXPECT_DOUBLE_EQ(s["results"]["ssr-lowq"]["gpu_ms"].get<double>(), 0.95);
+    EXPECT_DOUBLE_EQ(s["results"]["ppr"]["gpu_ms"].get<double>(), 0.95);
+    EXPECT_DOUBLE_EQ(s["results"]["ssr-hiz"]["gpu_ms"].get<double>(), 3.55);  // the trace + the build, like ours
+    EXPECT_DOUBLE_EQ(s["results"]["ssr-hiz"]["hiz_build_ms"].get<double>(), 0.35);
+    EXPECT_NEAR(s["results"]["ssr-brute"]["ratio_to_ppr"].get<double>(), 20.6 / 0.95, 1e-12);
+}
+
+TEST(BenchReport, NoTechniquesNoTechniquesSection) {
+    BenchResults r = results();
+    r.techniques.clear();
+    EXPECT_FALSE(benchJson(r).contains("techniques"));
+    EXPECT_EQ(benchMarkdown(r, "ppr bench").find("## Techniques"), std::string::npos);
+}
+
+TEST(BenchReport, MarkdownTechniquesTable) {
+    const std::string md = benchMarkdown(results(), "ppr bench --size 320x180");
+    EXPECT_NE(md.find("| technique | GPU ms | × PPR | × floor | PSNR dB | reflection PSNR dB | coverage | frame ms |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| ssr-brute | 20.00 | 20.00 | 40.00 | 30.00 | 30.00 | 0.5000 | 30.00 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| planar | 10.00 | 10.00 | 20.00 | ref | ref | ref | 20.00 |"), std::string::npos) << md;
+    // ssr-hiz's hierarchy build alone, right under ssr-hiz.
+    const size_t hiz = md.find("| ssr-hiz | 2.35 |");
+    const size_t build = md.find("| ↳ ssr-hiz hierarchy build (hiz.*) | 0.30 | 0.30 | 0.60 |");
+    ASSERT_NE(hiz, std::string::npos) << md;
+    ASSERT_NE(build, std::string::npos) << md;
+    EXPECT_EQ(md.find('\n', hiz) + 1, build);
+}
+
+TEST(BenchReport, MarkdownWithoutTheFloorShowsADash) {
+    const std::string md = benchMarkdown(results(false), "ppr bench");
+    EXPECT_NE(md.find("| ssr-brute | 20.00 | 20.00 | – |"), std::string::npos) << md;
+}
+
+TEST(BenchReport, MarkdownPerPassTableInFrameOrderWithOwnPassesBold) {
+    BenchResults r = results();
+    for (BenchTechnique& t : r.techniques) {  // frame order: scene passes, the technique's, composite
+        t.passMs["composite"] = 1.0;
+        t.passOrder = {"gbuffer", "lighting"};
+        for (const auto& [name, ms] : t.passMs)
+            if (name != "gbuffer" && name != "lighting" && name != "composite") t.passOrder.push_back(name);
+        t.passOrder.push_back("composite");
+    }
+    const std::string md = benchMarkdown(r, "ppr bench");
+    EXPECT_NE(md.find("| pass | ppr | ssr-brute | ssr-hiz | planar | floor |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| gbuffer | 3.000 | 3.000 | 3.000 | 3.000 | 3.000 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| hiz.build.2 |  |  | **0.050** |  |  |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| tiles.classify | **0.050** | **0.050** | **0.050** |  |  |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| floor |  |  |  |  | **0.500** |"), std::string::npos) << md;
+    const size_t lighting = md.find("| lighting |"), brute = md.find("| ssr-brute |  |"), floor = md.find("| floor |  |"),
+                 composite = md.find("| composite |");
+    ASSERT_NE(brute, std::string::npos) << md;
+    EXPECT_LT(lighting, brute);
+    EXPECT_LT(brute, floor);
+    EXPECT_LT(floor, composite);
+    EXPECT_EQ(count(md, "| composite |"), 1u);
+}
+
+TEST(BenchReport, MarkdownSlidesTable) {
+    const std::string md = benchMarkdown(results(), "ppr bench");
+    EXPECT_NE(md.find("| technique | slides GTX 1070 4K ms | slides × PPR | ours ms | ours × PPR |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| ssr-brute | 20.60 | 21.68 | 20.00 | 20.00 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| ssr-hiz (with hierarchy build) | 3.55 | 3.74 | 2.35 | 2.35 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| ↳ ssr-hiz hierarchy build | 0.35 | 0.37 | 0.30 | 0.30 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| ssr-lowq | 0.95 | 1.00 | – | – |"), std::string::npos) << md;  // not measured here
+}
