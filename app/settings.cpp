@@ -19,7 +19,7 @@ const std::vector<SettingSpec>& settingSpecs() {
         {"fallback", "ssr", {"ssr", "none"}, 0, 0,
          "PPR: reflective pixels no reflector rectangle covers (curved, rough) get ssr-hiz over the non-planar tiles, or nothing"},
         {"ssr_distance", "40", {}, 0.1, 1000.0, "SSR: longest reflected ray, metres (all four SSR techniques and PPR's fallback)"},
-        {"ssr_thickness", "0.25", {}, 0.001, 100.0, "SSR: a surface is this many metres thick (plus ssr_thickness_scale x its distance)"},
+        {"ssr_thickness", "0.05", {}, 0.001, 100.0, "SSR: a surface is this many metres thick (plus ssr_thickness_scale x its distance)"},
         {"ssr_thickness_scale", "0.02", {}, 0.0, 1.0, "SSR: thickness added per metre of view distance"},
         {"ssr_steps", "4096", {}, 1, 65536, "SSR: most march iterations per ray (the default never cuts a ray short on screen)"},
         {"exposure", "1", {}, 0.01, 100.0, "exposure multiplier before tonemapping"},

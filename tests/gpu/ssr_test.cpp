@@ -29,10 +29,15 @@ struct Expected {
     double reflectionDb, coverage;
 };
 const std::map<std::string, std::map<std::string, Expected>> kExpected = {
-    {"ssr-brute", {{"overview", {0, 0}}, {"puddles", {0, 0}}, {"grazing", {0, 0}}, {"stairs", {0, 0}}, {"mirror", {0, 0}}}},
-    {"ssr-lowq", {{"overview", {0, 0}}, {"puddles", {0, 0}}, {"grazing", {0, 0}}, {"stairs", {0, 0}}, {"mirror", {0, 0}}}},
-    {"ssr-hiz", {{"overview", {0, 0}}, {"puddles", {0, 0}}, {"grazing", {0, 0}}, {"stairs", {0, 0}}, {"mirror", {0, 0}}}},
-    {"ssr-linear", {{"overview", {0, 0}}, {"puddles", {0, 0}}, {"grazing", {0, 0}}, {"stairs", {0, 0}}, {"mirror", {0, 0}}}},
+    // measured reflection dB / coverage:  overview 22.62/0.9973  puddles 23.82/0.9930  grazing 25.59/0.9987
+    //                                     stairs 22.77/0.9978    mirror 22.09/0.9952
+    {"ssr-brute", {{"overview", {21.6, 0.97}}, {"puddles", {22.8, 0.97}}, {"grazing", {24.5, 0.97}}, {"stairs", {21.7, 0.97}}, {"mirror", {21.0, 0.97}}}},
+    // 11.93/0.8557  13.89/0.8555  16.71/0.9296  11.45/0.8984  16.42/0.9131
+    {"ssr-lowq", {{"overview", {10.9, 0.83}}, {"puddles", {12.8, 0.83}}, {"grazing", {15.7, 0.91}}, {"stairs", {10.4, 0.87}}, {"mirror", {15.4, 0.89}}}},
+    // 22.61/0.9973  24.00/0.9938  25.60/0.9987  22.89/0.9983  22.10/0.9952
+    {"ssr-hiz", {{"overview", {21.6, 0.97}}, {"puddles", {23.0, 0.97}}, {"grazing", {24.6, 0.97}}, {"stairs", {21.8, 0.97}}, {"mirror", {21.1, 0.97}}}},
+    // 19.10/0.9890  18.00/0.9663  22.09/0.9942  19.52/0.9919  19.75/0.9450
+    {"ssr-linear", {{"overview", {18.1, 0.96}}, {"puddles", {17.0, 0.94}}, {"grazing", {21.0, 0.97}}, {"stairs", {18.5, 0.97}}, {"mirror", {18.7, 0.92}}}},
 };
 
 TEST(SsrVsPlanar, EveryTechniqueRendersEveryCameraAndScores) {
@@ -53,35 +58,59 @@ TEST(SsrVsPlanar, EveryTechniqueRendersEveryCameraAndScores) {
             meanDb[technique] += s.psnrDb / std::size(kCameras);
         }
     }
-    // Pixel-granular marching is the family's reference quality.
-    for (const char* technique : kSsrTechniques) EXPECT_LE(meanDb[technique], meanDb["ssr-brute"] + 1e-9) << technique;
+    // Pixel-granular marching is the family's reference quality. ssr-hiz walks the same pixels where the
+    // hierarchy cannot rule them out, so it may tie (float rounding of the two walks: measured within
+    // 0.2 dB, mean 23.44 against 23.38); the others march coarser and must score lower.
+    EXPECT_LT(meanDb["ssr-lowq"], meanDb["ssr-brute"]);
+    EXPECT_LT(meanDb["ssr-linear"], meanDb["ssr-brute"]);
+    EXPECT_LE(meanDb["ssr-hiz"], meanDb["ssr-brute"] + 0.25);
+    std::printf("mean psnr_reflection_db: brute %.2f  lowq %.2f  hiz %.2f  linear %.2f\n", meanDb["ssr-brute"], meanDb["ssr-lowq"],
+                meanDb["ssr-hiz"], meanDb["ssr-linear"]);
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
 
-// Display-space difference between two reflections over the pixels where every given image hits.
+// How a technique's reflection agrees with ssr-brute's.
 struct Agreement {
-    uint64_t bothHit = 0, bruteHits = 0;
-    double meanAbsDiff = 0.0;  // display units [0, 1], mean over pixels and rgb
+    uint64_t bruteHits = 0, techniqueHits = 0, allHit = 0;
+    double meanAbsDiff = 0.0;  // display units [0, 1], mean over the pixels every image hits and rgb
+    double recall() const { return bruteHits ? double(techniqueHits) / double(bruteHits) : 1.0; }
 };
 
-Agreement agreement(const app::FloatImage& brute, const app::FloatImage& other, const std::vector<const app::FloatImage*>& all, float exposure) {
+Agreement agreement(const app::FloatImage& brute, const app::FloatImage& technique, const std::vector<const app::FloatImage*>& all,
+                    float exposure) {
     Agreement a;
     double sum = 0.0;
+    auto hit = [](const app::FloatImage& img, size_t i) { return img.rgba[i * 4 + 3] == gpu::kReflectionHit; };
+    auto display = [&](const app::FloatImage& img, size_t i) {
+        return gpu::displayFromRadiance(glm::vec3(img.rgba[i * 4], img.rgba[i * 4 + 1], img.rgba[i * 4 + 2]), exposure);
+    };
     for (size_t i = 0; i < size_t(brute.width) * brute.height; ++i) {
-        if (brute.rgba[i * 4 + 3] != gpu::kReflectionHit) continue;
+        if (!hit(brute, i)) continue;
         ++a.bruteHits;
-        bool everyHit = true;
-        for (const app::FloatImage* img : all) everyHit = everyHit && img->rgba[i * 4 + 3] == gpu::kReflectionHit;
-        if (!everyHit) continue;
-        ++a.bothHit;
-        const glm::vec3 x = gpu::displayFromRadiance(glm::vec3(brute.rgba[i * 4], brute.rgba[i * 4 + 1], brute.rgba[i * 4 + 2]), exposure);
-        const glm::vec3 y = gpu::displayFromRadiance(glm::vec3(other.rgba[i * 4], other.rgba[i * 4 + 1], other.rgba[i * 4 + 2]), exposure);
-        const glm::vec3 d = glm::abs(x - y);
+        a.techniqueHits += hit(technique, i);
+        if (!std::all_of(all.begin(), all.end(), [&](const app::FloatImage* img) { return hit(*img, i); })) continue;
+        ++a.allHit;
+        const glm::vec3 d = glm::abs(display(brute, i) - display(technique, i));
         sum += (d.x + d.y + d.z) / 3.0;
     }
-    a.meanAbsDiff = a.bothHit ? sum / double(a.bothHit) : 0.0;
+    a.meanAbsDiff = a.allHit ? sum / double(a.allHit) : 0.0;
     return a;
 }
+
+// Measured at 640x360 (recall of brute's hits, mean |display difference| where all three hit), with
+// the tolerances set a little above. ssr-hiz walks the pixels ssr-brute walks, skipping only cells the
+// hierarchy rules out, so it agrees almost exactly; ssr-lowq's 64 px stride steps over thin objects
+// and its binary search may settle on a later crossing.
+struct Tolerance {
+    double minRecall, maxMeanAbsDiff;
+};
+const std::map<std::string, std::map<std::string, Tolerance>> kAgreement = {
+    // measured: overview 0.8287/0.0369  puddles 0.7881/0.0256  grazing 0.8852/0.0236  stairs 0.8967/0.0982
+    //           mirror 0.8504/0.0219
+    {"ssr-lowq", {{"overview", {0.80, 0.05}}, {"puddles", {0.76, 0.035}}, {"grazing", {0.86, 0.035}}, {"stairs", {0.87, 0.11}}, {"mirror", {0.82, 0.035}}}},
+    // measured: recall 0.9999-1.0000, mean difference 0.0001-0.0005
+    {"ssr-hiz", {{"overview", {0.999, 0.002}}, {"puddles", {0.999, 0.002}}, {"grazing", {0.999, 0.002}}, {"stairs", {0.999, 0.002}}, {"mirror", {0.999, 0.002}}}},
+};
 
 TEST(SsrFamily, LowQualityAndHierarchicalAgreeWithBruteForceWhereAllThreeHit) {
     GpuFixture f;
@@ -92,16 +121,16 @@ TEST(SsrFamily, LowQualityAndHierarchicalAgreeWithBruteForceWhereAllThreeHit) {
         const app::FloatImage hiz = renderReflection(f, "ssr-hiz", camera);
         for (const auto& [name, img] : {std::pair{"ssr-lowq", &lowq}, std::pair{"ssr-hiz", &hiz}}) {
             const Agreement a = agreement(brute, *img, {&lowq, &hiz}, exposure);
-            std::printf("%-9s %-9s all three hit %.3f of brute's hits, mean |display difference| %.4f\n", name, camera,
-                        a.bruteHits ? double(a.bothHit) / a.bruteHits : 0.0, a.meanAbsDiff);
-            ASSERT_GT(a.bruteHits, 500u) << camera;
-            EXPECT_GE(double(a.bothHit) / a.bruteHits, 0.0) << name << " " << camera;
-            EXPECT_LE(a.meanAbsDiff, 1.0) << name << " " << camera;
+            std::printf("%-9s %-9s recall %.4f  all three hit %llu  mean |display difference| %.4f\n", name, camera, a.recall(),
+                        static_cast<unsigned long long>(a.allHit), a.meanAbsDiff);
+            ASSERT_GT(a.allHit, 500u) << camera;
+            const Tolerance& t = kAgreement.at(name).at(camera);
+            EXPECT_GE(a.recall(), t.minRecall) << name << " " << camera;
+            EXPECT_LE(a.meanAbsDiff, t.maxMeanAbsDiff) << name << " " << camera;
         }
     }
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
-
 
 // Pixel masks from the debug views: reflector-rectangle pixels (debug=reflectors tints them) and
 // pixels whose material is flagged reflective (debug=roughness shows the flag in blue).
@@ -152,7 +181,8 @@ TEST(PprFallback, ShadesTheNonPlanarReflectiveSurfacesOnly) {
             hits += b[3] == gpu::kReflectionHit;
         }
         std::printf("%-8s fallback hits %zu of %zu non-planar reflective pixels\n", camera, hits, otherCount);
-        EXPECT_GT(double(hits) / double(otherCount), 0.0) << camera;
+        // Measured 0.39 (grazing: many rays off the chrome sphere leave the screen) and 0.87 (puddles).
+        EXPECT_GT(double(hits) / double(otherCount), 0.3) << camera;
     }
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
