@@ -67,6 +67,16 @@ void HeadlessRenderer::ensureTargets(VkExtent2D extent) {
     reflectionImport_.finalAccess = graph::Access::HostRead;
 }
 
+VkCommandBuffer HeadlessRenderer::beginSlot(uint32_t slot) {
+    VK_CHECK(vkResetFences(ctx_.device(), 1, &fences_[slot]));
+    VkCommandBuffer cmd = cmds_[slot];
+    VK_CHECK(vkResetCommandBuffer(cmd, 0));
+    VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    VK_CHECK(vkBeginCommandBuffer(cmd, &bi));
+    return cmd;
+}
+
 CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExtent2D extent, uint32_t frames, bool dumpGraph,
                                         bool readReflection) {
     ensureTargets(extent);
@@ -98,12 +108,7 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
     for (uint32_t f = 0; f < frames; ++f) {
         const uint32_t slot = f % Renderer::kFramesInFlight;
         collect(slot);
-        VK_CHECK(vkResetFences(ctx_.device(), 1, &fences_[slot]));
-        VkCommandBuffer cmd = cmds_[slot];
-        VK_CHECK(vkResetCommandBuffer(cmd, 0));
-        VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-        bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-        VK_CHECK(vkBeginCommandBuffer(cmd, &bi));
+        VkCommandBuffer cmd = beginSlot(slot);
         FrameRequest req;
         req.camera = camera;
         req.extent = extent;
@@ -158,12 +163,7 @@ DepthCapture HeadlessRenderer::captureDepth(const scene::CameraPose& camera, VkE
     graph::ExternalBuffer atlasImport{atlasBuffer.buffer, {atlasBytes}, {}, graph::Access::HostRead};
 
     const uint32_t slot = 0;
-    VK_CHECK(vkResetFences(ctx_.device(), 1, &fences_[slot]));
-    VkCommandBuffer cmd = cmds_[slot];
-    VK_CHECK(vkResetCommandBuffer(cmd, 0));
-    VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    VK_CHECK(vkBeginCommandBuffer(cmd, &bi));
+    VkCommandBuffer cmd = beginSlot(slot);
     FrameRequest req;
     req.camera = camera;
     req.extent = extent;

@@ -48,6 +48,8 @@ public:
 
 private:
     void ensureTargets(VkExtent2D extent);
+    // Resets the slot's fence and command buffer and begins recording (the slot must be idle).
+    VkCommandBuffer beginSlot(uint32_t slot);
     const vk::Context& ctx_;
     Renderer& renderer_;
     VkCommandPool pool_ = VK_NULL_HANDLE;
