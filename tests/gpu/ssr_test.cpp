@@ -132,6 +132,24 @@ TEST(SsrFamily, LowQualityAndHierarchicalAgreeWithBruteForceWhereAllThreeHit) {
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
 
+// Indirect dispatch over the tile lists shades exactly the pixels the whole-screen pass shades.
+TEST(SsrFamily, IndirectAndWholeScreenDispatchAreBitIdentical) {
+    GpuFixture f;
+    for (const char* camera : {"puddles", "mirror"}) {
+        for (const char* technique : {"ssr-brute", "ssr-lowq", "ssr-hiz", "ssr-linear", "ppr"}) {
+            f.renderer->settings().set("indirect", "1");
+            const app::FloatImage indirect = renderReflection(f, technique, camera);
+            f.renderer->settings().set("indirect", "0");
+            const app::FloatImage whole = renderReflection(f, technique, camera);
+            f.renderer->settings().set("indirect", "1");
+            ASSERT_EQ(indirect.rgba.size(), whole.rgba.size());
+            EXPECT_EQ(std::memcmp(indirect.rgba.data(), whole.rgba.data(), whole.rgba.size() * sizeof(float)), 0)
+                << technique << " " << camera << " (ppr: with its fallback)";
+        }
+    }
+    EXPECT_EQ(f.ctx->validationErrors(), 0u);
+}
+
 // Pixel masks from the debug views: reflector-rectangle pixels (debug=reflectors tints them) and
 // pixels whose material is flagged reflective (debug=roughness shows the flag in blue).
 std::vector<bool> otherReflectivePixels(GpuFixture& f, const std::string& camera) {
