@@ -67,6 +67,7 @@ Renderer::Renderer(const vk::Context& ctx, const scene::Scene& scene) : ctx_(ctx
     ssrLinear_ = passes::makeSsrLinearPass(ctx);
     hiz_ = std::make_unique<passes::HizPass>(ctx);
     floor_ = std::make_unique<passes::FloorPass>(ctx);
+    glass_ = std::make_unique<passes::GlassForwardPass>(ctx, *gpuScene_);
     for (uint32_t slot = 0; slot < kFramesInFlight; ++slot) {
         stats_[slot] = vk::createBuffer(ctx, sizeof(gpu::PprFrameStats), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback,
                                         "ppr stats[" + std::to_string(slot) + "]");
@@ -94,6 +95,7 @@ Renderer::~Renderer() {
     ssrLinear_.reset();
     hiz_.reset();
     floor_.reset();
+    glass_.reset();
     pprBounds_.reset();
     reflectorBuffer_.reset();
     planar_.reset();
@@ -332,6 +334,10 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
     std::optional<passes::CompositeReflection> blend;
     if (reflection) blend = passes::CompositeReflection{*reflection, reflectorBuffer_->reflectors(slot)};
     graph::ImageHandle hdr = composite_->add(g, in, gb, lit, blend);
+    if (!gpuScene_->transparentDraws().empty()) {
+        passes::GlassForwardPass::sortBackToFront(*gpuScene_, req.camera.position, glassOrder_);
+        hdr = glass_->add(g, in, hdr, gb.depth, reflectorBuffer_->reflectors(slot), std::nullopt, &glassOrder_);
+    }
     graph::ImageHandle target = req.target ? g.importImage("target", req.target)
                                            : g.createImage("final", {req.extent.width, req.extent.height, kCaptureFormat, 1});
     graph::ImageHandle output = tonemap_->add(g, in, hdr, target);

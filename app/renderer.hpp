@@ -11,6 +11,7 @@
 #include "floor/floor_pass.hpp"
 #include "hiz/hiz_pass.hpp"
 #include "gbuffer/gbuffer_pass.hpp"
+#include "glass_forward/glass_forward_pass.hpp"
 #include "graph/executor.hpp"
 #include "lighting/lighting_pass.hpp"
 #include "planar/planar_pass.hpp"
@@ -121,6 +122,8 @@ private:
     std::unique_ptr<passes::SsrTracePass> ssrBrute_, ssrLowq_, ssrHiz_, ssrLinear_;
     std::unique_ptr<passes::HizPass> hiz_;
     std::unique_ptr<passes::FloorPass> floor_;
+    std::unique_ptr<passes::GlassForwardPass> glass_;
+    std::vector<uint32_t> glassOrder_;  // this frame's transparent draws, back to front (reused)
     vk::Buffer stats_[kFramesInFlight];  // PprFrameStats, host-read after the slot's fence
     graph::ExternalBuffer statsImport_[kFramesInFlight];
     bool statsWritten_[kFramesInFlight]{};

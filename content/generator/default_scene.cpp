@@ -109,7 +109,7 @@ private:
 };
 
 struct Materials {
-    int floor, brick, sandstone, marble, water, mirror, glass, glassBack, frame;
+    int floor, brick, sandstone, marble, water, mirror, glass, frame;
     int red, blue, yellow, green, teal, orange, white, terracotta, soil, leaves;
     int chrome, satinSteel;  // reflective but curved: no reflector rectangle fits them
 };
@@ -161,8 +161,16 @@ Materials createMaterials(GltfWriter& w, const std::string& dir) {
     // Factors are linear. Reflective surfaces are dark/neutral so the reflection carries the image.
     M.water = plain("puddle_water", {0.02f, 0.025f, 0.03f, 1.0f}, 0.05f, 0.0f, true);
     M.mirror = plain("mirror", {0.90f, 0.91f, 0.93f, 1.0f}, 0.02f, 1.0f, true);
-    M.glass = plain("glass_tinted", {0.10f, 0.15f, 0.17f, 1.0f}, 0.05f, 0.0f, true);
-    M.glassBack = plain("glass_tinted_back", {0.10f, 0.15f, 0.17f, 1.0f}, 0.05f);
+    {
+        // Transparent: drawn by the glass forward pass over the opaque scene, tinting what it lets through.
+        MaterialDesc m;
+        m.name = "glass_tinted";
+        m.baseColor = {0.62f, 0.82f, 0.84f, 0.6f};
+        m.roughness = 0.05f;
+        m.reflective = true;
+        m.transparent = true;
+        M.glass = w.addMaterial(m);
+    }
     M.frame = plain("frame_dark_metal", {0.10f, 0.10f, 0.11f, 1.0f}, 0.45f);
     M.red = plain("paint_red", {0.70f, 0.06f, 0.04f, 1.0f}, 0.45f);
     M.blue = plain("paint_blue", {0.05f, 0.16f, 0.70f, 1.0f}, 0.45f);
@@ -333,15 +341,14 @@ void buildPuddles(Layout& L, const Materials& M) {
 void glassPanel(Layout& L, const Materials& M, const std::string& name, const glm::dvec3& center,
                 const glm::dvec3& tangent, const glm::dvec3& normal, float halfW, float halfH) {
     const glm::mat3 basis = panelBasis(tangent, normal);
-    MeshData front, back, frame;
+    MeshData front, frame;  // one two-sided pane: the glass pass draws both sides
     addQuad(front, {-halfW, -halfH, 0.0f}, {2 * halfW, 0, 0}, {0, 2 * halfH, 0}, 1.0f);
-    addQuad(back, {halfW, -halfH, -0.02f}, {-2 * halfW, 0, 0}, {0, 2 * halfH, 0}, 1.0f);
     const float yBottom = -static_cast<float>(center.y), post = 0.08f;
     addBox(frame, {-halfW - post, yBottom, -0.05f}, {-halfW, halfH + 0.12f, 0.03f}, 1.0f, AllFaces & ~NegY);
     addBox(frame, {halfW, yBottom, -0.05f}, {halfW + post, halfH + 0.12f, 0.03f}, 1.0f, AllFaces & ~NegY);
     addBox(frame, {-halfW, yBottom, -0.05f}, {halfW, -halfH, 0.03f}, 1.0f, AllFaces & ~NegY);
     addBox(frame, {-halfW, halfH, -0.05f}, {halfW, halfH + 0.12f, 0.03f}, 1.0f);
-    for (MeshData* m : {&front, &back, &frame}) transformMesh(*m, basis, glm::vec3(0.0f));
+    for (MeshData* m : {&front, &frame}) transformMesh(*m, basis, glm::vec3(0.0f));
 
     ReflectorDesc r;
     r.normal = normal;
@@ -350,7 +357,6 @@ void glassPanel(Layout& L, const Materials& M, const std::string& name, const gl
     r.glass = true;
     r.reflectance = 0.3;
     L.reflective(name, L.mesh(front, name, M.glass), center, r);
-    L.object(name + "_back", L.mesh(back, name + "_back", M.glassBack), center);
     L.object(name + "_frame", L.mesh(frame, name + "_frame", M.frame), center);
 }
 

@@ -49,6 +49,7 @@ int GltfWriter::addMaterial(const MaterialDesc& m) {
     j["pbrMetallicRoughness"] = pbr;
     if (m.normalTexture >= 0) j["normalTexture"] = {{"index", m.normalTexture}, {"scale", 1.0}};
     if (m.reflective) j["extras"] = {{"ppr_reflective", true}};
+    if (m.transparent) j["alphaMode"] = "BLEND";
     materials_.push_back(j);
     return static_cast<int>(materials_.size() - 1);
 }

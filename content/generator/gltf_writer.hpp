@@ -27,6 +27,7 @@ struct MaterialDesc {
     float roughness = 1.0f;
     int baseColorTexture = -1, metallicRoughnessTexture = -1, normalTexture = -1;  // texture indices
     bool reflective = false;  // material extras {"ppr_reflective": true}
+    bool transparent = false; // alphaMode "BLEND": glass (base colour = tint, alpha = tint strength)
 };
 
 struct NodeDesc {

@@ -36,6 +36,10 @@ vk::Buffer uploadBuffer(const vk::Context& ctx, const void* data, VkDeviceSize b
     return dst;
 }
 
+bool GpuScene::transparent(uint32_t draw) const {
+    return std::binary_search(transparentDraws_.begin(), transparentDraws_.end(), draw);
+}
+
 GpuScene::GpuScene(const vk::Context& ctx, const scene::Scene& scene, VkSampler materialSampler) : ctx_(ctx), scene_(scene) {
     vertices_ = uploadBuffer(ctx, scene.vertices.data(), scene.vertices.size() * sizeof(scene::Vertex),
                              VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "scene vertices");
@@ -50,6 +54,8 @@ GpuScene::GpuScene(const vk::Context& ctx, const scene::Scene& scene, VkSampler 
         const scene::Mesh& m = scene.meshes[d.mesh];
         g.material = m.material >= 0 ? static_cast<uint32_t>(m.material) : static_cast<uint32_t>(scene.materials.size());
         g.reflectorId = d.reflector >= 0 ? static_cast<uint32_t>(d.reflector) + 1 : 0;
+        if (m.material >= 0 && scene.materials[size_t(m.material)].transparent)
+            transparentDraws_.push_back(static_cast<uint32_t>(draws.size()));
         draws.push_back(g);
     }
     draws_ = uploadBuffer(ctx, draws.data(), draws.size() * sizeof(DrawData), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "scene draws");
@@ -62,7 +68,7 @@ GpuScene::GpuScene(const vk::Context& ctx, const scene::Scene& scene, VkSampler 
         g.metallic = m.metallicFactor;
         g.roughness = m.roughnessFactor;
         g.normalScale = m.normalScale;
-        g.flags = m.reflective ? kMaterialReflective : 0u;
+        g.flags = (m.reflective ? kMaterialReflective : 0u) | (m.transparent ? kMaterialTransparent : 0u);
         g.baseColorTex = tex(m.baseColorTexture);
         g.normalTex = tex(m.normalTexture);
         g.metalRoughTex = tex(m.metallicRoughnessTexture);

@@ -23,20 +23,36 @@ public:
     VkDescriptorSet textureSet() const { return textureSet_; }
     const scene::Scene& cpu() const { return scene_; }
 
-    // Records the indexed draws; `perDraw(i)` is called before each draw (push constants).
+    // Records the indexed draws of opaque materials (G-buffer, shadow map); `perDraw(i)` is called
+    // before each draw (push constants). Transparent materials (glTF alphaMode BLEND: glass) are left
+    // to the glass forward pass.
     template <class F>
-    void drawAll(VkCommandBuffer cmd, F&& perDraw) const {
+    void drawOpaque(VkCommandBuffer cmd, F&& perDraw) const {
+        bindGeometry(cmd);
+        for (uint32_t i = 0; i < scene_.draws.size(); ++i)
+            if (!transparent(i)) drawOne(cmd, i, perDraw);
+    }
+    // Records the given draws in the given order (the glass pass: back to front).
+    template <class F>
+    void drawInOrder(VkCommandBuffer cmd, const std::vector<uint32_t>& order, F&& perDraw) const {
+        bindGeometry(cmd);
+        for (uint32_t i : order) drawOne(cmd, i, perDraw);
+    }
+    bool transparent(uint32_t draw) const;
+    const std::vector<uint32_t>& transparentDraws() const { return transparentDraws_; }
+
+private:
+    void bindGeometry(VkCommandBuffer cmd) const {
         VkDeviceSize offset = 0;
         vkCmdBindVertexBuffers(cmd, 0, 1, &vertices_.buffer, &offset);
         vkCmdBindIndexBuffer(cmd, indices_.buffer, 0, VK_INDEX_TYPE_UINT32);
-        for (uint32_t i = 0; i < scene_.draws.size(); ++i) {
-            const scene::Mesh& m = scene_.meshes[scene_.draws[i].mesh];
-            perDraw(i);
-            vkCmdDrawIndexed(cmd, m.indexCount, 1, m.firstIndex, m.vertexOffset, 0);
-        }
     }
-
-private:
+    template <class F>
+    void drawOne(VkCommandBuffer cmd, uint32_t i, F& perDraw) const {
+        const scene::Mesh& m = scene_.meshes[scene_.draws[i].mesh];
+        perDraw(i);
+        vkCmdDrawIndexed(cmd, m.indexCount, 1, m.firstIndex, m.vertexOffset, 0);
+    }
     void uploadTextures(VkSampler sampler);
     const vk::Context& ctx_;
     const scene::Scene& scene_;
@@ -45,6 +61,7 @@ private:
     VkDescriptorSetLayout textureLayout_ = VK_NULL_HANDLE;
     VkDescriptorPool pool_ = VK_NULL_HANDLE;
     VkDescriptorSet textureSet_ = VK_NULL_HANDLE;
+    std::vector<uint32_t> transparentDraws_;
 };
 
 // Upload helper: copies `bytes` into a GPU-only buffer through a staging buffer (load time only).

@@ -18,7 +18,7 @@ struct MaterialData {
     float metallic;
     float roughness;
     float normalScale;
-    uint flags;         // kMaterialReflective
+    uint flags;         // kMaterialReflective | kMaterialTransparent
     uint baseColorTex;  // kNoTexture when absent
     uint normalTex;
     uint metalRoughTex;
@@ -39,5 +39,6 @@ PPR_SIZE_CHECK(DrawPush, 16);
 
 PPR_CONST(uint, kNoTexture, 0xFFFFFFFFu)
 PPR_CONST(uint, kMaterialReflective, 1u)
+PPR_CONST(uint, kMaterialTransparent, 2u)  // glTF alphaMode BLEND: the glass forward pass draws it
 
 #endif

@@ -99,6 +99,7 @@ void loadMaterials(const GltfFile& file, Scene& scene) {
             if (!flag.IsBool()) fail(what + ": extras.ppr_reflective: expected true or false");
             mat.reflective = flag.Get<bool>();
         }
+        mat.transparent = gm.alphaMode == "BLEND";
         scene.materials.push_back(std::move(mat));
     }
 }

@@ -37,6 +37,8 @@ struct Material {
     int normalTexture = -1;
     int metallicRoughnessTexture = -1;  // glTF: G = roughness, B = metallic
     bool reflective = false;            // material extras {"ppr_reflective": true}
+    bool transparent = false;           // glTF alphaMode "BLEND": glass, drawn by the glass forward pass
+                                        // (base colour = tint, alpha = how strongly it tints)
 };
 
 struct Mesh {  // one glTF primitive (triangles)

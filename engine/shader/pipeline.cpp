@@ -157,6 +157,16 @@ Pipeline GraphicsPipelineBuilder::build() {
     ds.depthCompareOp = depthOp_;
     std::vector<VkPipelineColorBlendAttachmentState> blends(colorFormats_.size());
     for (auto& b : blends) b.colorWriteMask = 0xF;
+    if (addAndFilter_ && !blends.empty()) {
+        VkPipelineColorBlendAttachmentState& b = blends[0];
+        b.blendEnable = VK_TRUE;
+        b.srcColorBlendFactor = VK_BLEND_FACTOR_ONE;
+        b.dstColorBlendFactor = VK_BLEND_FACTOR_SRC1_COLOR;
+        b.colorBlendOp = VK_BLEND_OP_ADD;
+        b.srcAlphaBlendFactor = VK_BLEND_FACTOR_ZERO;  // keep the destination's alpha
+        b.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+        b.alphaBlendOp = VK_BLEND_OP_ADD;
+    }
     VkPipelineColorBlendStateCreateInfo cb{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
     cb.attachmentCount = static_cast<uint32_t>(blends.size());
     cb.pAttachments = blends.data();

@@ -71,6 +71,9 @@ public:
     GraphicsPipelineBuilder& cull(VkCullModeFlags mode) { cull_ = mode; return *this; }
     GraphicsPipelineBuilder& depthBias(float constant, float slope) { biasConst_ = constant; biasSlope_ = slope; return *this; }
     GraphicsPipelineBuilder& depthClamp(bool on) { depthClamp_ = on; return *this; }
+    // Colour attachment 0 becomes src0 + dst × src1 (dual-source blending): a transparent surface
+    // adds what it reflects and filters what it lets through, per channel.
+    GraphicsPipelineBuilder& addAndFilterBlend() { addAndFilter_ = true; return *this; }
     Pipeline build();
 
 private:
@@ -89,6 +92,7 @@ private:
     VkCullModeFlags cull_ = VK_CULL_MODE_NONE;
     float biasConst_ = 0.0f, biasSlope_ = 0.0f;
     bool depthClamp_ = false;
+    bool addAndFilter_ = false;
 };
 
 // Collects descriptor writes for set 0 and pushes them with vkCmdPushDescriptorSetKHR.

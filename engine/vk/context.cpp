@@ -216,6 +216,7 @@ std::unique_ptr<Context> Context::create(const ContextOptions& options) {
     f2.features.shaderStorageImageWriteWithoutFormat = VK_TRUE;
     f2.features.shaderStorageImageReadWithoutFormat = VK_TRUE;
     f2.features.depthClamp = VK_TRUE;
+    f2.features.dualSrcBlend = VK_TRUE;  // the glass pass: add the reflection, filter what shows through
 
     // Check support so a missing feature gives a clear message instead of VK_ERROR_FEATURE_NOT_PRESENT.
     {
@@ -241,6 +242,7 @@ std::unique_ptr<Context> Context::create(const ContextOptions& options) {
         need(s2.features.fragmentStoresAndAtomics, "fragmentStoresAndAtomics");
         need(s2.features.shaderStorageImageWriteWithoutFormat, "shaderStorageImageWriteWithoutFormat");
         need(s2.features.shaderStorageImageReadWithoutFormat, "shaderStorageImageReadWithoutFormat");
+        need(s2.features.dualSrcBlend, "dualSrcBlend");
         if (!missing.empty()) throw std::runtime_error("vulkan: " + ctx->info_.name + " lacks required features:" + missing);
         f2.features.samplerAnisotropy = s2.features.samplerAnisotropy;
         f2.features.depthClamp = s2.features.depthClamp;

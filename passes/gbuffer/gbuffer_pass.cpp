@@ -55,7 +55,7 @@ GBuffer GBufferPass::add(graph::RenderGraph& g, const FrameInputs& in, const std
                 .push(cmd, pipeline_);
             VkDescriptorSet textures = in.scene->textureSet();
             vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.layout(), 1, 1, &textures, 0, nullptr);
-            in.scene->drawAll(cmd, [&](uint32_t i) { pipeline_.pushConstants(cmd, gpu::DrawPush{i, 0, 0, 0}); });
+            in.scene->drawOpaque(cmd, [&](uint32_t i) { pipeline_.pushConstants(cmd, gpu::DrawPush{i, 0, 0, 0}); });
         });
     return d;
 }

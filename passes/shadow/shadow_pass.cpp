@@ -34,7 +34,7 @@ graph::ImageHandle ShadowPass::add(graph::RenderGraph& g, const FrameInputs& in,
                 .uniformBuffer(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
                 .storageBuffer(in.scene->drawBuffer())
                 .push(cmd, pipeline_);
-            in.scene->drawAll(cmd, [&](uint32_t i) { pipeline_.pushConstants(cmd, gpu::DrawPush{i, 0, 0, 0}); });
+            in.scene->drawOpaque(cmd, [&](uint32_t i) { pipeline_.pushConstants(cmd, gpu::DrawPush{i, 0, 0, 0}); });
         });
     return d.map;
 }

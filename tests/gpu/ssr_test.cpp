@@ -29,15 +29,17 @@ struct Expected {
     double reflectionDb, coverage;
 };
 const std::map<std::string, std::map<std::string, Expected>> kExpected = {
-    // measured reflection dB / coverage:  overview 22.62/0.9973  puddles 23.82/0.9930  grazing 25.59/0.9987
-    //                                     stairs 22.77/0.9978    mirror 22.09/0.9952
-    {"ssr-brute", {{"overview", {21.6, 0.97}}, {"puddles", {22.8, 0.97}}, {"grazing", {24.5, 0.97}}, {"stairs", {21.7, 0.97}}, {"mirror", {21.0, 0.97}}}},
-    // 11.93/0.8557  13.89/0.8555  16.71/0.9296  11.45/0.8984  16.42/0.9131
-    {"ssr-lowq", {{"overview", {10.9, 0.83}}, {"puddles", {12.8, 0.83}}, {"grazing", {15.7, 0.91}}, {"stairs", {10.4, 0.87}}, {"mirror", {15.4, 0.89}}}},
-    // 22.61/0.9973  24.00/0.9938  25.60/0.9987  22.89/0.9983  22.10/0.9952
-    {"ssr-hiz", {{"overview", {21.6, 0.97}}, {"puddles", {23.0, 0.97}}, {"grazing", {24.6, 0.97}}, {"stairs", {21.8, 0.97}}, {"mirror", {21.1, 0.97}}}},
-    // 19.10/0.9890  18.00/0.9663  22.09/0.9942  19.52/0.9919  19.75/0.9450
-    {"ssr-linear", {{"overview", {18.1, 0.96}}, {"puddles", {17.0, 0.94}}, {"grazing", {21.0, 0.97}}, {"stairs", {18.5, 0.97}}, {"mirror", {18.7, 0.92}}}},
+    // Glass panels are transparent and drawn after the G-buffer: no screen-space technique reflects in
+    // them, and they are not among these pixels.
+    // measured reflection dB / coverage:  overview 20.47/0.9970  puddles 23.99/0.9938  grazing 25.76/0.9999
+    //                                     stairs 22.77/0.9978    mirror 22.48/0.9978
+    {"ssr-brute", {{"overview", {19.4, 0.97}}, {"puddles", {22.9, 0.97}}, {"grazing", {24.7, 0.97}}, {"stairs", {21.7, 0.97}}, {"mirror", {21.4, 0.97}}}},
+    // 9.14/0.6689  13.86/0.8545  18.61/0.9597  11.45/0.8984  16.50/0.9154
+    {"ssr-lowq", {{"overview", {8.1, 0.64}}, {"puddles", {12.8, 0.83}}, {"grazing", {17.6, 0.94}}, {"stairs", {10.4, 0.87}}, {"mirror", {15.5, 0.89}}}},
+    // 20.44/0.9970  24.18/0.9946  25.79/0.9999  22.89/0.9983  22.48/0.9978
+    {"ssr-hiz", {{"overview", {19.4, 0.97}}, {"puddles", {23.1, 0.97}}, {"grazing", {24.7, 0.97}}, {"stairs", {21.8, 0.97}}, {"mirror", {21.4, 0.97}}}},
+    // 16.71/0.9766  18.02/0.9668  23.43/0.9946  19.52/0.9919  19.97/0.9475
+    {"ssr-linear", {{"overview", {15.7, 0.95}}, {"puddles", {17.0, 0.94}}, {"grazing", {22.4, 0.97}}, {"stairs", {18.5, 0.97}}, {"mirror", {18.9, 0.92}}}},
 };
 
 TEST(SsrVsPlanar, EveryTechniqueRendersEveryCameraAndScores) {
@@ -60,7 +62,7 @@ TEST(SsrVsPlanar, EveryTechniqueRendersEveryCameraAndScores) {
     }
     // Pixel-granular marching is the family's reference quality. ssr-hiz walks the same pixels where the
     // hierarchy cannot rule them out, so it may tie (float rounding of the two walks: measured within
-    // 0.2 dB, mean 23.44 against 23.38); the others march coarser and must score lower.
+    // 0.2 dB, mean 23.16 against 23.09); the others march coarser and must score lower.
     EXPECT_LT(meanDb["ssr-lowq"], meanDb["ssr-brute"]);
     EXPECT_LT(meanDb["ssr-linear"], meanDb["ssr-brute"]);
     EXPECT_LE(meanDb["ssr-hiz"], meanDb["ssr-brute"] + 0.25);
@@ -105,9 +107,9 @@ struct Tolerance {
     double minRecall, maxMeanAbsDiff;
 };
 const std::map<std::string, std::map<std::string, Tolerance>> kAgreement = {
-    // measured: overview 0.8287/0.0369  puddles 0.7881/0.0256  grazing 0.8852/0.0236  stairs 0.8967/0.0982
+    // measured: overview 0.7002/0.0560  puddles 0.8009/0.0254  grazing 0.9405/0.0209  stairs 0.8967/0.0982
     //           mirror 0.8504/0.0219
-    {"ssr-lowq", {{"overview", {0.80, 0.05}}, {"puddles", {0.76, 0.035}}, {"grazing", {0.86, 0.035}}, {"stairs", {0.87, 0.11}}, {"mirror", {0.82, 0.035}}}},
+    {"ssr-lowq", {{"overview", {0.67, 0.066}}, {"puddles", {0.77, 0.035}}, {"grazing", {0.91, 0.03}}, {"stairs", {0.87, 0.11}}, {"mirror", {0.82, 0.035}}}},
     // measured: recall 0.9999-1.0000, mean difference 0.0001-0.0005
     {"ssr-hiz", {{"overview", {0.999, 0.002}}, {"puddles", {0.999, 0.002}}, {"grazing", {0.999, 0.002}}, {"stairs", {0.999, 0.002}}, {"mirror", {0.999, 0.002}}}},
 };
