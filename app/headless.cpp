@@ -131,6 +131,9 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
     }
     for (uint32_t s = 0; s < Renderer::kFramesInFlight; ++s) collect(s);
     result.pprStats = renderer_.frameStats(lastSlot);
+    result.glass = renderer_.glassStats(lastSlot);
+    if (result.glass && result.glass->overflowed())
+        result.warning += (result.warning.empty() ? "" : "; ") + result.glass->overflowMessage();
 
     vmaInvalidateAllocation(ctx_.allocator(), readback_.allocation, 0, VK_WHOLE_SIZE);
     result.image.width = extent.width;

@@ -22,6 +22,7 @@ struct CaptureResult {
     std::string dot;
     std::string warning;                         // the renderer's, e.g. reflectors beyond PPR's budget
     std::optional<gpu::PprFrameStats> pprStats;  // tile and culling counts of the last frame (PPR only)
+    std::optional<GlassStats> glass;             // the last frame's glass atlas (PPR with glass panels)
 };
 
 // Tests: one frame's G-buffer depth and, when the technique builds it, its depth hierarchy.

@@ -15,6 +15,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 
@@ -30,6 +31,7 @@ uint32_t debugViewIndex(const std::string& name) {
     if (name == "intermediate") return gpu::kDebugIntermediate;
     if (name == "holes") return gpu::kDebugHoles;
     if (name == "tiles") return gpu::kDebugTiles;
+    if (name == "atlas") return gpu::kDebugAtlas;
     return gpu::kDebugNone;
 }
 
@@ -47,6 +49,16 @@ glm::mat4 lightViewProjection(const scene::Scene& s, const glm::vec3& lightDir) 
 }
 
 }  // namespace
+
+std::string GlassStats::overflowMessage() const {
+    if (!overflowed()) return {};
+    char scaleText[32];
+    std::snprintf(scaleText, sizeof scaleText, "%.3g", scale);
+    const std::string side = std::to_string(atlasSize);
+    return "glass atlas " + side + "x" + side + " overflowed: " + std::to_string(scaled) + " of " + std::to_string(visible) +
+           " visible glass panels' reflections scaled to " + scaleText + ", " + std::to_string(dropped) +
+           " dropped (the farthest first); raise --set glass_atlas";
+}
 
 Renderer::Renderer(const vk::Context& ctx, const scene::Scene& scene) : ctx_(ctx), scene_(scene) {
     samplers_.create(ctx);
@@ -68,6 +80,8 @@ Renderer::Renderer(const vk::Context& ctx, const scene::Scene& scene) : ctx_(ctx
     hiz_ = std::make_unique<passes::HizPass>(ctx);
     floor_ = std::make_unique<passes::FloorPass>(ctx);
     glass_ = std::make_unique<passes::GlassForwardPass>(ctx, *gpuScene_);
+    glassReflect_ = std::make_unique<passes::GlassReflectPass>(ctx);
+    glassRegions_ = std::make_unique<passes::GlassRegionBuffer>(ctx, kFramesInFlight);
     for (uint32_t slot = 0; slot < kFramesInFlight; ++slot) {
         stats_[slot] = vk::createBuffer(ctx, sizeof(gpu::PprFrameStats), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback,
                                         "ppr stats[" + std::to_string(slot) + "]");
@@ -96,6 +110,8 @@ Renderer::~Renderer() {
     hiz_.reset();
     floor_.reset();
     glass_.reset();
+    glassReflect_.reset();
+    glassRegions_.reset();
     pprBounds_.reset();
     reflectorBuffer_.reset();
     planar_.reset();
@@ -125,6 +141,11 @@ void Renderer::setReflectors(std::vector<scene::Reflector> reflectors) {
                             std::to_string(gpu::kPprMaxReflectors) + ": the last " + std::to_string(extra) + " (from '" +
                             reflectorList_[gpu::kPprMaxReflectors].name + "' on) get no PPR reflection";
     }
+    glassIndices_.clear();
+    const size_t projected = std::min<size_t>(reflectorList_.size(), gpu::kPprMaxReflectors);
+    for (size_t i = 0; i < projected; ++i)
+        if (reflectorList_[i].kind == scene::ReflectorKind::Glass) glassIndices_.push_back(static_cast<uint32_t>(i));
+    glassRegions_->reserve(static_cast<uint32_t>(projected));
     // Worst case every reflector is its own visible plane: size the per-frame views once per change.
     ensureViewCapacity(1 + static_cast<uint32_t>(reflectorList_.size()));
 }
@@ -174,6 +195,7 @@ gpu::FrameConstants Renderer::mainConstants(const FrameRequest& req) const {
 Renderer::Views Renderer::writeFrameConstants(uint32_t slot, const FrameRequest& req, const std::string& technique) {
     Views views;
     const gpu::FrameConstants main = mainConstants(req);
+    frameViewProj_ = main.viewProj;
     ++frameIndex_;
     auto write = [&](uint32_t view, const gpu::FrameConstants& f) {
         const VkDeviceSize offset = (VkDeviceSize(slot) * viewCapacity_ + view) * frameStride_;
@@ -207,6 +229,42 @@ Renderer::Views Renderer::writeFrameConstants(uint32_t slot, const FrameRequest&
     vmaFlushAllocation(ctx_.allocator(), frameConstants_.allocation, VkDeviceSize(slot) * viewCapacity_ * frameStride_,
                        VkDeviceSize(viewCapacity_) * frameStride_);
     return views;
+}
+
+uint32_t Renderer::pprResolveFlags() const {
+    uint32_t flags = 0;
+    if (settings_.get("holes") == "1") flags |= gpu::kPprHoleFilling;
+    if (settings_.get("filter") == "1") flags |= gpu::kPprFiltering;
+    if (settings_.get("antibleed") == "1") flags |= gpu::kPprAntiBleeding;
+    return flags;
+}
+
+void Renderer::addGlassAtlas(graph::RenderGraph& g, const passes::FrameInputs& in, uint32_t slot, const FrameRequest& req,
+                             passes::PprProjectInputs& project) {
+    glassStats_[slot].reset();
+    glassUsedHeight_ = 0;
+    project.glass = settings_.get("glass") == "1" && !glassIndices_.empty();
+    scene::GlassAtlasLayout layout;
+    uint32_t atlasSize = 1;  // bound but unused without glass
+    if (project.glass) {
+        atlasSize = static_cast<uint32_t>(settings_.number("glass_atlas"));
+        layout = scene::packGlassAtlas(reflectorList_, glassIndices_, frameViewProj_, req.camera.position, scene::kNearPlane,
+                                       {in.extent.width, in.extent.height}, atlasSize);
+        GlassStats stats;
+        stats.atlasSize = atlasSize;
+        stats.visible = layout.visible;
+        stats.regions = static_cast<uint32_t>(layout.regions.size());
+        stats.scaled = layout.scaled;
+        stats.dropped = layout.dropped;
+        stats.scale = layout.scale;
+        glassStats_[slot] = stats;
+        for (const scene::GlassRegion& r : layout.regions)
+            glassUsedHeight_ = std::max(glassUsedHeight_, static_cast<uint32_t>(r.atlasOrigin.y + r.atlasSize.y));
+        if (layout.regions.empty()) atlasSize = 1;
+    }
+    glassRegions_->write(slot, layout);
+    project.glassAtlas = passes::addPprClearPass(g, "ppr.glass.atlas", {atlasSize, atlasSize}, "ppr.glass.clear");
+    project.glassRegions = glassRegions_->table(slot);
 }
 
 passes::HizAtlas Renderer::addHiz(graph::RenderGraph& g, const passes::FrameInputs& in, const passes::GBuffer& gb, const FrameRequest& req,
@@ -259,8 +317,21 @@ std::optional<graph::ImageHandle> Renderer::addReflection(graph::RenderGraph& g,
         project.tilesX = tiles.tilesX;
         project.tilesY = tiles.tilesY;
         project.cullTiles = settings_.get("tiles") == "1";
+        addGlassAtlas(g, in, slot, req, project);
         const passes::PprProjectOutputs scatter = pprProject_->add(g, in, binding, project);
         statsWritten_[slot] = true;
+        if (glassStats_[slot] && glassStats_[slot]->regions > 0) {
+            passes::GlassReflectInputs glass;
+            glass.atlas = scatter.glassAtlas;
+            glass.sceneColor = lit;
+            glass.regions = glassRegions_->table(slot);
+            glass.regionList = glassRegions_->list(slot);
+            glass.regionCount = glassStats_[slot]->regions;
+            glass.atlasSize = glassStats_[slot]->atlasSize;
+            glass.usedHeight = glassUsedHeight_;
+            glass.flags = pprResolveFlags();
+            glassReflection_ = passes::GlassReflection{glassReflect_->add(g, in, glass), glassRegions_->table(slot)};
+        }
 
         passes::PprReflectInputs reflect;
         reflect.intermediate = scatter.intermediate;
@@ -270,9 +341,7 @@ std::optional<graph::ImageHandle> Renderer::addReflection(graph::RenderGraph& g,
         reflect.tiles = &tiles;
         reflect.debugView = debugViewIndex(settings_.get("debug"));
         reflect.maxReflectorId = projected;
-        if (settings_.get("holes") == "1") reflect.flags |= gpu::kPprHoleFilling;
-        if (settings_.get("filter") == "1") reflect.flags |= gpu::kPprFiltering;
-        if (settings_.get("antibleed") == "1") reflect.flags |= gpu::kPprAntiBleeding;
+        reflect.flags = pprResolveFlags();
         if (settings_.get("indirect") == "1") reflect.flags |= gpu::kPprIndirect;
         graph::ImageHandle reflection = pprReflect_->add(g, in, reflect);
         // The debug views PPR draws over the whole screen are left as they are.
@@ -314,6 +383,8 @@ std::optional<gpu::PprFrameStats> Renderer::frameStats(uint32_t slot) const {
 FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequest& req) {
     FrameRecord rec;
     statsWritten_[slot] = false;
+    glassStats_[slot].reset();
+    glassReflection_.reset();
     std::string technique = technique_;
     if (technique == "ppr" && std::max(req.extent.width, req.extent.height) > gpu::kPprMaxExtent) {
         // The intermediate encoding holds offsets up to 4095 px; larger frames render without PPR.
@@ -336,7 +407,9 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
     graph::ImageHandle hdr = composite_->add(g, in, gb, lit, blend);
     if (!gpuScene_->transparentDraws().empty()) {
         passes::GlassForwardPass::sortBackToFront(*gpuScene_, req.camera.position, glassOrder_);
-        hdr = glass_->add(g, in, hdr, gb.depth, reflectorBuffer_->reflectors(slot), std::nullopt, &glassOrder_);
+        hdr = glass_->add(g, in, hdr, gb.depth, reflectorBuffer_->reflectors(slot), glassReflection_, &glassOrder_);
+        if (glassReflection_ && debugViewIndex(settings_.get("debug")) == gpu::kDebugAtlas)
+            hdr = glassReflect_->addAtlasView(g, in, glassReflection_->atlas, hdr);
     }
     graph::ImageHandle target = req.target ? g.importImage("target", req.target)
                                            : g.createImage("final", {req.extent.width, req.extent.height, kCaptureFormat, 1});

@@ -12,6 +12,8 @@
 #include "hiz/hiz_pass.hpp"
 #include "gbuffer/gbuffer_pass.hpp"
 #include "glass_forward/glass_forward_pass.hpp"
+#include "glass_reflect/glass_reflect_pass.hpp"
+#include "glass_reflect/glass_regions.hpp"
 #include "graph/executor.hpp"
 #include "lighting/lighting_pass.hpp"
 #include "planar/planar_pass.hpp"
@@ -59,6 +61,19 @@ struct FrameRecord {
 };
 
 
+// What the glass atlas held in a PPR frame (report.json "glass", the viewer).
+struct GlassStats {
+    uint32_t atlasSize = 0;  // texels per side (--set glass_atlas)
+    uint32_t visible = 0;    // glass panels on screen
+    uint32_t regions = 0;    // of those, with a region in the atlas
+    uint32_t scaled = 0;     // regions scaled down to fit (overflow)
+    uint32_t dropped = 0;    // panels without a region (overflow: the farthest first)
+    float scale = 1.0f;      // the common scale of the regions
+    bool overflowed() const { return scaled > 0 || dropped > 0; }
+    // One line saying how the atlas overflowed ("" when it did not).
+    std::string overflowMessage() const;
+};
+
 class Renderer {
 public:
     static constexpr uint32_t kFramesInFlight = 2;
@@ -85,6 +100,8 @@ public:
     std::optional<gpu::PprFrameStats> frameStats(uint32_t slot) const;
     // Set while the reflector set exceeds PPR's budget (kPprMaxReflectors): says which are ignored.
     const std::string& reflectorWarning() const { return reflectorWarning_; }
+    // Glass atlas counters of the frame last recorded in `slot`, when it ran PPR with glass panels.
+    std::optional<GlassStats> glassStats(uint32_t slot) const { return glassStats_[slot]; }
 
     const graph::GraphExecutor& executor() const { return *executor_; }
     graph::GraphExecutor& executor() { return *executor_; }  // the viewer trims the transient pool after resizes
@@ -101,6 +118,9 @@ private:
                                                     const passes::FrameInputs& in, const passes::GBuffer& gb, graph::ImageHandle lit,
                                                     graph::ImageHandle shadowMap, const Views& views, const FrameRequest& req,
                                                     FrameRecord& rec);
+    uint32_t pprResolveFlags() const;  // holes / filter / antibleed
+    void addGlassAtlas(graph::RenderGraph& g, const passes::FrameInputs& in, uint32_t slot, const FrameRequest& req,
+                       passes::PprProjectInputs& project);
     passes::HizAtlas addHiz(graph::RenderGraph& g, const passes::FrameInputs& in, const passes::GBuffer& gb, const FrameRequest& req,
                             FrameRecord& rec);
     passes::SsrInputs ssrInputs(const passes::GBuffer& gb, graph::ImageHandle lit, uint32_t slot, const passes::TileLists& tiles) const;
@@ -123,6 +143,13 @@ private:
     std::unique_ptr<passes::HizPass> hiz_;
     std::unique_ptr<passes::FloorPass> floor_;
     std::unique_ptr<passes::GlassForwardPass> glass_;
+    std::unique_ptr<passes::GlassReflectPass> glassReflect_;
+    std::unique_ptr<passes::GlassRegionBuffer> glassRegions_;
+    std::vector<uint32_t> glassIndices_;                     // glass reflectors among those PPR projects
+    std::optional<passes::GlassReflection> glassReflection_;  // this frame's, when PPR resolved one
+    std::optional<GlassStats> glassStats_[kFramesInFlight];
+    glm::mat4 frameViewProj_{1.0f};                           // the main view's, of the frame being recorded
+    uint32_t glassUsedHeight_ = 0;                            // atlas rows holding this frame's regions
     std::vector<uint32_t> glassOrder_;  // this frame's transparent draws, back to front (reused)
     vk::Buffer stats_[kFramesInFlight];  // PprFrameStats, host-read after the slot's fence
     graph::ExternalBuffer statsImport_[kFramesInFlight];

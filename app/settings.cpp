@@ -8,9 +8,9 @@ namespace ppr::app {
 
 const std::vector<SettingSpec>& settingSpecs() {
     static const std::vector<SettingSpec> specs = {
-        {"debug", "none", {"none", "albedo", "normals", "roughness", "reflectors", "depth", "intermediate", "holes", "tiles"}, 0, 0,
+        {"debug", "none", {"none", "albedo", "normals", "roughness", "reflectors", "depth", "intermediate", "holes", "tiles", "atlas"}, 0, 0,
          "debug view: G-buffer channels, reflector ids, PPR's decoded intermediate buffer, PPR's hole mask, "
-         "reflectors surviving PPR's per-tile culling (heat map)"},
+         "reflectors surviving PPR's per-tile culling (heat map), PPR's glass reflection atlas"},
         {"holes", "1", {"0", "1"}, 0, 0, "PPR hole filling from the neighbour with the shortest offset"},
         {"filter", "1", {"0", "1"}, 0, 0, "PPR filtered (bilinear, encoded fractions) colour sample instead of point"},
         {"antibleed", "1", {"0", "1"}, 0, 0, "PPR colour-bleeding reduction (YCoCg, luma and chroma apart)"},
@@ -22,6 +22,8 @@ const std::vector<SettingSpec>& settingSpecs() {
         {"ssr_thickness", "0.05", {}, 0.001, 100.0, "SSR: a surface is this many metres thick (plus ssr_thickness_scale x its distance)"},
         {"ssr_thickness_scale", "0.02", {}, 0.0, 1.0, "SSR: thickness added per metre of view distance"},
         {"ssr_steps", "4096", {}, 1, 65536, "SSR: most march iterations per ray (the default never cuts a ray short on screen)"},
+        {"glass", "1", {"0", "1"}, 0, 0, "PPR reflections in glass panels, through the glass atlas (0: glass only transmits)"},
+        {"glass_atlas", "1024", {}, 64, 8192, "texels per side of the glass atlas (PPR's intermediate buffer for glass panels)"},
         {"exposure", "1", {}, 0.01, 100.0, "exposure multiplier before tonemapping"},
         {"shadowres", "2048", {}, 256, 8192, "shadow map resolution (texels per side)"},
     };

@@ -165,6 +165,7 @@ private:
     double lastCursorX_ = 0.0, lastCursorY_ = 0.0;
     TimingHistory timings_;
     std::optional<gpu::PprFrameStats> pprStats_;
+    std::optional<GlassStats> glassStats_;
     std::deque<double> frameMs_, cpuMs_;
     std::string status_;
     std::string warning_;  // from the renderer (e.g. PPR refused at this size), shown in the panel
@@ -307,6 +308,7 @@ void Viewer::buildUi() {
     m.warning = warning_;
     m.timings = &timings_;
     m.pprStats = pprStats_;
+    m.glassStats = glassStats_;
     m.reflectors = static_cast<uint32_t>(renderer_->reflectors().size());
     m.reflectorsProjected = std::min(m.reflectors, gpu::kPprMaxReflectors);
     m.status = status_;
@@ -448,6 +450,7 @@ void Viewer::run(uint64_t maxFrames, uint64_t captureAt) {
         if (sync_.busy[slot]) {
             timings_.add(renderer_->timings(slot));
             if (auto stats = renderer_->frameStats(slot)) pprStats_ = stats;
+            glassStats_ = renderer_->glassStats(slot);
             sync_.busy[slot] = false;
         }
         // Every frame at or before frames_ - kFramesInFlight has completed: unused transients can go.

@@ -294,6 +294,11 @@ PanelActions drawPanel(PanelModel& m) {
             ImGui::Text("reflector-tile pairs %u of %llu (max %u per tile)", s.reflectorTilePairs,
                         static_cast<unsigned long long>(s.tilesWithContent) * m.reflectorsProjected, s.maxTileSurvivors);
         }
+        if (m.technique == "ppr" && m.glassStats) {
+            const GlassStats& g = *m.glassStats;
+            ImGui::Text("glass atlas %ux%u: %u of %u panels, scale %.2f", g.atlasSize, g.atlasSize, g.regions, g.visible, g.scale);
+            if (g.overflowed()) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.2f, 1.0f), "%s", g.overflowMessage().c_str());
+        }
     }
 
     if (ImGui::CollapsingHeader("Settings", ImGuiTreeNodeFlags_DefaultOpen)) {

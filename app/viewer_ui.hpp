@@ -83,6 +83,7 @@ struct PanelModel {
     std::string warning;    // the renderer's, shown in the panel
     const TimingHistory* timings = nullptr;
     std::optional<gpu::PprFrameStats> pprStats;  // tile and culling counts of the last completed PPR frame
+    std::optional<GlassStats> glassStats;        // its glass atlas (PPR with glass panels)
     uint32_t reflectors = 0, reflectorsProjected = 0;
     std::string status;  // last capture result or settings error
 };

@@ -321,6 +321,7 @@ void buildPuddles(Layout& L, const Materials& M) {
         {"puddle_mirror", 0.0, -7.4, {1, 0, 0}, 2.0, 0.8, 0.7},      // in front of the mirror wall
         {"puddle_stairs", -5.2, -2.0, {1, 0, 0}, 0.8, 0.5, 0.6},     // at the foot of the stairs
         {"puddle_small", -0.6, 4.6, {1, 0, 0}, 0.4, 0.3, 0.6},
+        {"puddle_window", 11.3, -1.0, {1, 0, 0}, 0.45, 1.3, 0.7},    // behind the east glass, seen through it
     };
     uint32_t seed = 101;
     for (const Spec& s : specs) {
@@ -355,7 +356,7 @@ void glassPanel(Layout& L, const Materials& M, const std::string& name, const gl
     r.tangent = tangent;
     r.halfExtents = {halfW, halfH};
     r.glass = true;
-    r.reflectance = 0.3;
+    r.reflectance = 1.0;  // glass reflects by its Fresnel term alone
     L.reflective(name, L.mesh(front, name, M.glass), center, r);
     L.object(name + "_frame", L.mesh(frame, name + "_frame", M.frame), center);
 }
@@ -405,6 +406,7 @@ void buildCameras(Layout& L) {
     L.camera("grazing", {2.8, 0.4, 5.2}, 0.0, -6.0);
     L.camera("stairs", {-6.0, 2.7, 0.3}, -28.4, -21.0);
     L.camera("mirror", {-2.2, 1.7, -3.6}, 17.0, -5.0);
+    L.camera("glass", {7.6, 2.3, 1.4}, 62.0, -24.0);  // through the east glass at the puddle behind it
 }
 
 }  // namespace

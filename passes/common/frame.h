@@ -36,5 +36,6 @@ PPR_CONST(uint, kDebugShadow, 6u)
 PPR_CONST(uint, kDebugIntermediate, 7u)  // PPR: the decoded intermediate buffer
 PPR_CONST(uint, kDebugHoles, 8u)         // PPR: own data / hole-filled / no data per reflector pixel
 PPR_CONST(uint, kDebugTiles, 9u)         // PPR: reflectors surviving per-tile culling, as a heat map
+PPR_CONST(uint, kDebugAtlas, 10u)        // PPR: the glass reflection atlas, fitted to the screen height
 
 #endif

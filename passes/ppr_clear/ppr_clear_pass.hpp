@@ -7,7 +7,7 @@ namespace ppr::passes {
 
 constexpr VkFormat kPprIntermediateFormat = VK_FORMAT_R32_UINT;
 
-// Creates `name` at `extent` and adds the clear pass; returns the cleared version.
-graph::ImageHandle addPprClearPass(graph::RenderGraph& g, const std::string& name, VkExtent2D extent);
+// Creates `name` at `extent` and adds the clear pass `passName`; returns the cleared version.
+graph::ImageHandle addPprClearPass(graph::RenderGraph& g, const std::string& name, VkExtent2D extent, const std::string& passName = "ppr.clear");
 
 }  // namespace ppr::passes

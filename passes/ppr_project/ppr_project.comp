@@ -6,6 +6,7 @@
 #include "ppr_common/tile_culling.h"
 #include "ppr_common/tiles.h"
 #include "ppr_project/ppr_project.h"
+#include "glass_forward/glass_forward.h"
 
 // PPR step 2, the projection pass: every pixel finds the reflectors that reflect it and scatters its
 // screen-space offset to where it appears in them, keeping the closest with imageAtomicMin.
@@ -22,6 +23,9 @@ layout(set = 0, binding = 5, scalar) readonly buffer Bounds { PprReflectorBounds
 layout(set = 0, binding = 6, scalar) writeonly buffer TileSurvivors { uint tileSurvivors[]; };
 layout(set = 0, binding = 7, scalar) buffer Stats { PprFrameStats stats; };
 layout(set = 0, binding = 8, scalar) readonly buffer PlaneLeaders { uint planeLeaders[]; };  // a reflector per cull plane
+// Glass panels: their own intermediate buffer, an atlas with one region per visible panel this frame.
+layout(set = 0, binding = 9, r32ui) uniform uimage2D glassAtlas;
+layout(set = 0, binding = 10, scalar) readonly buffer GlassRegions { GlassRegionData glassRegions[]; };  // per reflector
 layout(push_constant, scalar) uniform Push { PprProjectPush pc; };
 
 const uint kThreads = kPprTileSize * kPprTileSize;
@@ -55,13 +59,14 @@ bool insideRectangle(ReflectorData r, vec3 p) {
 // Occluding shapes: does the segment eye → hit cross another reflector's rectangle first? Coplanar
 // neighbours meet the segment at its end and do not count. Only a reflector whose screen rectangle
 // holds the written pixel can cross that segment (it projects to that one point), so the tile's
-// occluder list is enough.
+// occluder list is enough. Glass lets the view through: it occludes nothing.
 bool occludedByOtherReflector(vec3 eye, vec3 hit, uint self, uint candidates) {
     vec3 d = hit - eye;
     for (uint k = 0u; k < candidates; ++k) {
         uint j = occluderAt(k);
         if (j == self) continue;
         ReflectorData o = reflectors[j];
+        if (o.kind == kReflectorGlass) continue;
         float denom = dot(d, o.normal);
         if (abs(denom) < 1e-8) continue;
         float t = dot(o.center - eye, o.normal) / denom;
@@ -79,6 +84,21 @@ void writeOffset(ivec2 pix, vec3 mirrored) {
     uint value;
     if (!pprEncode(target - (vec2(pix) + 0.5), value)) return;  // beyond the 12-bit range: dropped, not wrapped
     imageAtomicMin(intermediate, ivec2(target), value);
+}
+
+// A glass panel's data goes to its atlas region, at the texel under the written pixel; the offset
+// stays in screen pixels. No occlusion test: whatever hides the panel is the glass pass's depth test.
+void writeGlassOffset(ivec2 pix, vec3 mirrored, uint panel) {
+    GlassRegionData region = glassRegions[panel];
+    vec4 clip = frame.viewProj * vec4(mirrored, 1.0);
+    if (clip.w <= 0.0 || region.valid == 0u) return;
+    vec2 target = (clip.xy / clip.w * 0.5 + 0.5) * frame.screenSize;
+    ivec2 texel = ivec2(floor(glassAtlasFromScreen(region, target)));
+    ivec2 lo = ivec2(region.atlasOrigin), hi = lo + ivec2(region.atlasSize);
+    if (any(lessThan(texel, lo)) || any(greaterThanEqual(texel, hi))) return;  // never into another region
+    uint value;
+    if (!pprEncode(target - (vec2(pix) + 0.5), value)) return;
+    imageAtomicMin(glassAtlas, texel, value);
 }
 
 // Builds this tile's survivor and occluder lists. Called by every thread (uniform control flow).
@@ -213,13 +233,17 @@ void main() {
         uint i = k < candidates ? survivorAt(k) : 0u;
         uint g = k < candidates ? reflectors[i].orientationGroup : 0xFFFFFFFEu;
         if (g != group) {
-            if (best != 0xFFFFFFFFu && !occludedByOtherReflector(eye, bestHit, best, occluders)) writeOffset(pix, bestMirrored);
+            if (best != 0xFFFFFFFFu) {
+                if (reflectors[best].kind == kReflectorGlass) writeGlassOffset(pix, bestMirrored, best);
+                else if (!occludedByOtherReflector(eye, bestHit, best, occluders)) writeOffset(pix, bestMirrored);
+            }
             group = g;
             best = 0xFFFFFFFFu;
             bestDistance = 3.4e38;
         }
         if (k == candidates) break;
         ReflectorData r = reflectors[i];
+        if (r.kind == kReflectorGlass && (pc.glass == 0u || glassRegions[i].valid == 0u)) continue;  // no region this frame
         float d = dot(p - r.center, r.normal);
         if (d <= above || d >= bestDistance) continue;  // not above this plane, or a nearer parallel shape won
         float eyeHeight = dot(eye - r.center, r.normal);

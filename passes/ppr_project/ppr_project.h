@@ -14,8 +14,10 @@ struct PprProjectPush {
     uint cullTiles;       // 1: per-tile reflector culling (--set tiles=1); 0: every reflector per pixel
     uint tilesX;          // tiles per row: index of the per-tile survivor count
     uint cullPlaneCount;  // ≤ kPprMaxCullPlanes (ppr_common/tile_culling.h)
+    uint glass;           // 1: glass reflectors write into their atlas regions (--set glass=1); 0: skipped
+    uint pad0, pad1, pad2;
 };
 PPR_END
-PPR_SIZE_CHECK(PprProjectPush, 16);
+PPR_SIZE_CHECK(PprProjectPush, 32);
 
 #endif

@@ -14,7 +14,8 @@ PprProjectPass::PprProjectPass(const vk::Context& ctx) : ctx_(ctx) {
     shader::PipelineLayoutDesc layout;
     layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                            VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,          VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                           VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
+                           VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                           VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,  VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
     layout.pushConstantBytes = sizeof(gpu::PprProjectPush);
     pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(ppr_project_comp), layout, "ppr.project");
 }
@@ -26,6 +27,7 @@ PprProjectOutputs PprProjectPass::add(graph::RenderGraph& g, const FrameInputs& 
     push.cullTiles = inputs.cullTiles ? 1u : 0u;
     push.tilesX = inputs.tilesX;
     push.cullPlaneCount = r.cullPlanes;
+    push.glass = inputs.glass ? 1u : 0u;
     PprProjectOutputs out;
     graph::BufferHandle survivors = g.createBuffer("ppr.tile_survivors", {sizeof(uint32_t) * inputs.tilesX * inputs.tilesY});
     ComputePass(g, ctx_, "ppr.project", pipeline_)
@@ -38,6 +40,8 @@ PprProjectOutputs PprProjectPass::add(graph::RenderGraph& g, const FrameInputs& 
         .storageWrite(survivors, &out.tileSurvivors)
         .storageReadWrite(inputs.stats, &out.stats)
         .hostStorage(r.planeLeaders)
+        .storageReadWrite(inputs.glassAtlas, &out.glassAtlas)
+        .hostStorage(inputs.glassRegions)
         .push(push)
         .dispatch(in.extent, gpu::kPprTileSize);
     return out;

@@ -21,12 +21,16 @@ struct PprProjectInputs {
     graph::BufferHandle stats;        // PprFrameStats (counters added to)
     uint32_t tilesX = 0, tilesY = 0;
     bool cullTiles = true;            // --set tiles
+    graph::ImageHandle glassAtlas;    // r32ui, cleared (glass panels' intermediate buffer)
+    VkBuffer glassRegions = VK_NULL_HANDLE;  // GlassRegionData per reflector (host-written for the frame)
+    bool glass = true;                // --set glass
 };
 
 struct PprProjectOutputs {
     graph::ImageHandle intermediate;
     graph::BufferHandle tileSurvivors;  // uint per tile: reflectors surviving culling (debug=tiles)
     graph::BufferHandle stats;
+    graph::ImageHandle glassAtlas;
 };
 
 class PprProjectPass {

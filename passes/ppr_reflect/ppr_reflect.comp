@@ -6,9 +6,8 @@
 #include "ppr_common/tiles.h"
 #include "ppr_reflect/ppr_reflect.h"
 
-// PPR step 3, the reflection pass: decode the offset stored at each reflector pixel, patch holes from
-// the neighbour with the shortest offset, sample the lit scene filtered and unfiltered, and reduce
-// the colour bleeding of the filtered sample. Writes the reflection image (common/reflection.h).
+// PPR step 3, the reflection pass: resolves each reflector pixel (ppr_common/ppr_resolve.glsl: decode,
+// hole filling, filtered sample, anti-bleeding) into the reflection image (common/reflection.h).
 // Dispatched over the whole screen or, indirectly, over the tiles that hold reflector pixels (the
 // image is cleared first).
 layout(local_size_x = kPprTileSize, local_size_y = kPprTileSize) in;
@@ -26,27 +25,7 @@ uint fetchValue(ivec2 p) {
     return imageLoad(intermediate, p).r;
 }
 
-vec2 fullOffset(uint v) {
-    PprDecoded d = pprDecode(v);
-    return d.whole + d.fraction;
-}
-
-vec3 rgbToYCoCg(vec3 c) { return vec3(0.25 * c.r + 0.5 * c.g + 0.25 * c.b, 0.5 * c.r - 0.5 * c.b, -0.25 * c.r + 0.5 * c.g - 0.25 * c.b); }
-vec3 yCoCgToRgb(vec3 c) { return vec3(c.x + c.y - c.z, c.x + c.z, c.x - c.y - c.z); }
-
-// Keep the filtered colour unless it strays perceptually far from the point sample: luma and
-// (luma-normalised) chroma are pulled towards the point sample separately, by how far apart they are.
-vec3 reduceColorBleeding(vec3 filtered, vec3 unfiltered) {
-    float exposure = frame.lightColor.w;  // compare as displayed, not in raw HDR units
-    vec3 f = rgbToYCoCg(filtered * exposure), u = rgbToYCoCg(unfiltered * exposure);
-    f.yz /= max(f.x, 1e-4);
-    u.yz /= max(u.x, 1e-4);
-    float lumaWeight = clamp(3.0 * abs(f.x - u.x), 0.0, 1.0);
-    float chromaWeight = clamp(1.4 * length(f.yz - u.yz), 0.0, 1.0);
-    float y = mix(f.x, u.x, lumaWeight);
-    vec2 coCg = mix(f.yz, u.yz, chromaWeight) * y;
-    return max(yCoCgToRgb(vec3(y, coCg)), vec3(0.0)) / exposure;
-}
+#include "ppr_common/ppr_resolve.glsl"
 
 vec3 hue(float angle) { return clamp(abs(fract(angle + vec3(0.0, 2.0 / 3.0, 1.0 / 3.0)) * 6.0 - 3.0) - 1.0, 0.0, 1.0); }
 
@@ -87,49 +66,15 @@ void main() {
         return;
     }
 
-    // Hole filling: take the neighbour with the smallest offset when this pixel has no data, or when
-    // that neighbour's offset is significantly (kPprHoleMinDistance) shorter — a hole in the first
-    // reflection layer. The slides' four neighbours.
-    ivec2 readPix = pix;
-    if ((pc.flags & kPprHoleFilling) != 0u) {
-        const ivec2 n1 = ivec2(1, 0), n2 = ivec2(0, 1), n3 = ivec2(1, 1), n4 = ivec2(-1, 0);
-        uint v1 = fetchValue(pix + n1), v2 = fetchValue(pix + n2), v3 = fetchValue(pix + n3), v4 = fetchValue(pix + n4);
-        uint vmin = min(min(min(v0, v1), min(v2, v3)), v4);
-        bool fill = v0 == kPprClearValue || distance(fullOffset(v0), fullOffset(vmin)) > kPprHoleMinDistance;
-        if (fill && vmin != v0) {
-            if (vmin == v1) readPix = pix + n1;
-            else if (vmin == v2) readPix = pix + n2;
-            else if (vmin == v3) readPix = pix + n3;
-            else readPix = pix + n4;
-        }
-    }
-    PprDecoded d = pprDecode(fetchValue(readPix));
-    if (!d.valid) {
+    PprResolved r = pprResolve(pix, vec2(pix) + 0.5, 1.0, pc.flags);
+    if (!r.valid) {
         imageStore(outReflection, pix, vec4(0.0, 0.0, 0.0, kReflectionNone));
         if (pc.debugView == kDebugHoles) imageStore(outReflection, pix, vec4(1.0, 0.0, 0.0, 1.0));
         return;
     }
-
-    // The offset as if this pixel had the neighbour's data: the point sample repeats the neighbour's
-    // source; the filtered one moves the source the mirrored way along the offset.
-    vec2 offsetFiltered = d.whole + d.fraction;
-    vec2 offsetPoint = d.whole;
-    vec2 shift = vec2(readPix - pix);
-    if (readPix != pix) {
-        vec2 dir = normalize(offsetFiltered);
-        offsetPoint -= shift;
-        offsetFiltered -= 2.0 * dir * dot(dir, shift);
-    }
-    vec2 centre = vec2(pix) + 0.5;
-    vec3 filtered = textureLod(sceneLinear, (centre - offsetFiltered) * frame.invScreenSize, 0.0).rgb;
-    vec3 unfiltered = textureLod(scenePoint, (centre - offsetPoint) * frame.invScreenSize, 0.0).rgb;
-    vec3 color = unfiltered;
-    if ((pc.flags & kPprFiltering) != 0u)
-        color = (pc.flags & kPprAntiBleeding) != 0u ? reduceColorBleeding(filtered, unfiltered) : filtered;
-
     if (pc.debugView == kDebugHoles) {
-        imageStore(outReflection, pix, vec4(readPix == pix ? vec3(0.0, 0.8, 0.0) : vec3(1.0, 0.85, 0.0), 1.0));
+        imageStore(outReflection, pix, vec4(r.readTexel == pix ? vec3(0.0, 0.8, 0.0) : vec3(1.0, 0.85, 0.0), 1.0));
         return;
     }
-    imageStore(outReflection, pix, vec4(color, readPix == pix ? kReflectionHit : kReflectionFilled));
+    imageStore(outReflection, pix, vec4(r.color, r.readTexel == pix ? kReflectionHit : kReflectionFilled));
 }

@@ -1,0 +1,58 @@
+#include "glass_reflect/glass_reflect_pass.hpp"
+
+#include "common/clear_pass.hpp"
+#include "common/compute_pass.hpp"
+#include "glass_reflect/glass_reflect.h"
+#include "glass_atlas_view_comp.h"
+#include "glass_reflect_comp.h"
+
+namespace ppr::passes {
+
+GlassReflectPass::GlassReflectPass(const vk::Context& ctx) : ctx_(ctx) {
+    shader::PipelineLayoutDesc layout;
+    layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,         VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+                           VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                           VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,         VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                           VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
+    layout.pushConstantBytes = sizeof(gpu::GlassReflectPush);
+    pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(glass_reflect_comp), layout, "ppr.glass.reflect");
+    shader::PipelineLayoutDesc viewLayout;
+    viewLayout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
+    view_ = shader::createComputePipeline(ctx, PPR_SPIRV(glass_atlas_view_comp), viewLayout, "glass.atlas_view");
+}
+
+graph::ImageHandle GlassReflectPass::addAtlasView(graph::RenderGraph& g, const FrameInputs& in, graph::ImageHandle reflectionAtlas,
+                                                  graph::ImageHandle color) const {
+    graph::ImageHandle out;
+    ComputePass(g, ctx_, "glass.atlas_view", view_)
+        .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
+        .sampled(reflectionAtlas, in.samplers->nearestClamp)
+        .storageReadWrite(color, &out)
+        .dispatch(in.extent, gpu::kGlassReflectGroupSize);
+    return out;
+}
+
+graph::ImageHandle GlassReflectPass::add(graph::RenderGraph& g, const FrameInputs& in, const GlassReflectInputs& inputs) const {
+    const uint32_t size = inputs.atlasSize;
+    // Rows below the packed regions are never read: cleared (cheap, transfer), not dispatched.
+    graph::ImageHandle target = addClearPass(g, "ppr.glass.reflection.clear",
+                                             g.createImage("ppr.glass.reflection", {size, size, kFormat, 1}), VkClearColorValue{});
+    if (inputs.usedHeight == 0 || inputs.regionCount == 0) return target;
+    gpu::GlassReflectPush push{};
+    push.regionCount = inputs.regionCount;
+    push.flags = inputs.flags;
+    graph::ImageHandle out;
+    ComputePass(g, ctx_, "ppr.glass.reflect", pipeline_)
+        .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
+        .storageRead(inputs.atlas)
+        .sampled(inputs.sceneColor, in.samplers->linearClamp)
+        .sampled(inputs.sceneColor, in.samplers->nearestClamp)
+        .hostStorage(inputs.regions)
+        .hostStorage(inputs.regionList)
+        .storageReadWrite(target, &out)
+        .push(push)
+        .dispatch({size, inputs.usedHeight}, gpu::kGlassReflectGroupSize);
+    return out;
+}
+
+}  // namespace ppr::passes

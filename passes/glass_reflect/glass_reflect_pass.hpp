@@ -1,0 +1,34 @@
+#pragma once
+// PPR's reflection pass for the glass atlas (glass_reflect.comp): the atlas's encoded offsets → the
+// glass reflection atlas (rgba16f) that the glass forward pass samples.
+#include "common/frame_inputs.hpp"
+#include "graph/graph.hpp"
+
+namespace ppr::passes {
+
+struct GlassReflectInputs {
+    graph::ImageHandle atlas;      // r32ui, written by ppr.project
+    graph::ImageHandle sceneColor;  // the lit scene
+    VkBuffer regions = VK_NULL_HANDLE, regionList = VK_NULL_HANDLE;  // glass_regions.hpp, this frame's slot
+    uint32_t regionCount = 0;
+    uint32_t atlasSize = 0;        // texels per side
+    uint32_t usedHeight = 0;       // atlas rows holding regions: the rest is not dispatched
+    uint32_t flags = 0;            // ppr_reflect.h toggles (holes, filter, antibleed)
+};
+
+class GlassReflectPass {
+public:
+    static constexpr VkFormat kFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+    explicit GlassReflectPass(const vk::Context& ctx);
+    // Pass "ppr.glass.reflect"; returns the reflection atlas (same size as the atlas).
+    graph::ImageHandle add(graph::RenderGraph& g, const FrameInputs& in, const GlassReflectInputs& inputs) const;
+    // --set debug=atlas: draws the reflection atlas over `color` (HDR), fitted to the screen height
+    // (pass "glass.atlas_view"); returns the new version.
+    graph::ImageHandle addAtlasView(graph::RenderGraph& g, const FrameInputs& in, graph::ImageHandle reflectionAtlas, graph::ImageHandle color) const;
+
+private:
+    const vk::Context& ctx_;
+    shader::Pipeline pipeline_, view_;
+};
+
+}  // namespace ppr::passes

@@ -1,0 +1,81 @@
+// PPR's reflection resolve, shared by the screen-space reflection pass (ppr_reflect.comp) and the
+// glass atlas's (glass_reflect.comp): decode the offset stored at a texel, patch holes from the
+// neighbour with the shortest offset, sample the lit scene filtered and unfiltered, and reduce the
+// colour bleeding of the filtered sample.
+//
+// The includer provides `uint fetchValue(ivec2 texel)` (kPprClearValue outside its buffer) and the
+// samplers `sceneLinear` / `scenePoint` (the lit scene, bilinear and point). A texel covers
+// `pixelsPerTexel` screen pixels (1 for the screen-sized buffer; more in a scaled-down atlas region);
+// the stored offsets are always in screen pixels.
+#include "ppr_common/encoding.h"
+#include "ppr_reflect/ppr_reflect.h"
+
+vec2 fullOffset(uint v) {
+    PprDecoded d = pprDecode(v);
+    return d.whole + d.fraction;
+}
+
+vec3 rgbToYCoCg(vec3 c) { return vec3(0.25 * c.r + 0.5 * c.g + 0.25 * c.b, 0.5 * c.r - 0.5 * c.b, -0.25 * c.r + 0.5 * c.g - 0.25 * c.b); }
+vec3 yCoCgToRgb(vec3 c) { return vec3(c.x + c.y - c.z, c.x + c.z, c.x - c.y - c.z); }
+
+// Keep the filtered colour unless it strays perceptually far from the point sample: luma and
+// (luma-normalised) chroma are pulled towards the point sample separately, by how far apart they are.
+vec3 reduceColorBleeding(vec3 filtered, vec3 unfiltered) {
+    float exposure = frame.lightColor.w;  // compare as displayed, not in raw HDR units
+    vec3 f = rgbToYCoCg(filtered * exposure), u = rgbToYCoCg(unfiltered * exposure);
+    f.yz /= max(f.x, 1e-4);
+    u.yz /= max(u.x, 1e-4);
+    float lumaWeight = clamp(3.0 * abs(f.x - u.x), 0.0, 1.0);
+    float chromaWeight = clamp(1.4 * length(f.yz - u.yz), 0.0, 1.0);
+    float y = mix(f.x, u.x, lumaWeight);
+    vec2 coCg = mix(f.yz, u.yz, chromaWeight) * y;
+    return max(yCoCgToRgb(vec3(y, coCg)), vec3(0.0)) / exposure;
+}
+
+struct PprResolved {
+    bool valid;
+    vec3 color;
+    ivec2 readTexel;  // the texel whose data was used (hole filling may pick a neighbour)
+};
+
+PprResolved pprResolve(ivec2 texel, vec2 screenCentre, float pixelsPerTexel, uint flags) {
+    PprResolved r;
+    r.readTexel = texel;
+    r.color = vec3(0.0);
+    uint v0 = fetchValue(texel);
+    // Hole filling: take the neighbour with the smallest offset when this texel has no data, or when
+    // that neighbour's offset is significantly (kPprHoleMinDistance) shorter — a hole in the first
+    // reflection layer. The slides' four neighbours.
+    if ((flags & kPprHoleFilling) != 0u) {
+        const ivec2 n1 = ivec2(1, 0), n2 = ivec2(0, 1), n3 = ivec2(1, 1), n4 = ivec2(-1, 0);
+        uint v1 = fetchValue(texel + n1), v2 = fetchValue(texel + n2), v3 = fetchValue(texel + n3), v4 = fetchValue(texel + n4);
+        uint vmin = min(min(min(v0, v1), min(v2, v3)), v4);
+        bool fill = v0 == kPprClearValue || distance(fullOffset(v0), fullOffset(vmin)) > kPprHoleMinDistance;
+        if (fill && vmin != v0) {
+            if (vmin == v1) r.readTexel = texel + n1;
+            else if (vmin == v2) r.readTexel = texel + n2;
+            else if (vmin == v3) r.readTexel = texel + n3;
+            else r.readTexel = texel + n4;
+        }
+    }
+    PprDecoded d = pprDecode(fetchValue(r.readTexel));
+    r.valid = d.valid;
+    if (!d.valid) return r;
+
+    // The offset as if this texel had the neighbour's data: the point sample repeats the neighbour's
+    // source; the filtered one moves the source the mirrored way along the offset.
+    vec2 offsetFiltered = d.whole + d.fraction;
+    vec2 offsetPoint = d.whole;
+    vec2 shift = vec2(r.readTexel - texel) * pixelsPerTexel;
+    if (r.readTexel != texel) {
+        vec2 dir = normalize(offsetFiltered);
+        offsetPoint -= shift;
+        offsetFiltered -= 2.0 * dir * dot(dir, shift);
+    }
+    vec3 filtered = textureLod(sceneLinear, (screenCentre - offsetFiltered) * frame.invScreenSize, 0.0).rgb;
+    vec3 unfiltered = textureLod(scenePoint, (screenCentre - offsetPoint) * frame.invScreenSize, 0.0).rgb;
+    r.color = unfiltered;
+    if ((flags & kPprFiltering) != 0u)
+        r.color = (flags & kPprAntiBleeding) != 0u ? reduceColorBleeding(filtered, unfiltered) : filtered;
+    return r;
+}
