@@ -25,6 +25,25 @@ util::Rgba8Image scoredPixelsImage(const FloatImage& reference, const util::Rgba
     return out;
 }
 
+// Glass panels, scored in their reflection atlas against the reference's (same layout: same camera,
+// size and settings); empty when the reference has no glass reflection in view. A technique without
+// one (screen-space techniques cannot reflect in transparent surfaces) scores as black.
+nlohmann::json glassScores(const CaptureResult& r, const CaptureResult& ref, VkExtent2D extent, float exposure) {
+    if (!ref.glass || ref.glassReflection.rgba.empty()) return nlohmann::json::object();
+    FloatImage atlas = r.glassReflection;
+    if (atlas.rgba.empty()) {
+        atlas.width = ref.glassReflection.width;
+        atlas.height = ref.glassReflection.height;
+        atlas.rgba.assign(ref.glassReflection.rgba.size(), 0.0f);
+    }
+    const ReflectionScore s = scoreReflection(atlas, ref.glassReflection, exposure);
+    const FloatImage mask = glassScreenMask(ref.glassReflection, ref.glass->layout, extent.width, extent.height);
+    return {{"psnr_db_glass", compositedPsnrDb(r.image, ref.image, mask)},
+            {"psnr_reflection_db_glass", s.psnrDb},
+            {"coverage_glass", s.coverage},
+            {"scored_texels_glass", s.maskPixels}};
+}
+
 FloatImage emptyReflection(VkExtent2D extent) {  // technique `none`: no reflection anywhere
     FloatImage f;
     f.width = extent.width;
@@ -89,6 +108,7 @@ int runCompare(const Options& o) {
             util::writePng((dir / finalFile).string(), r.image);
             util::writePng((dir / reflFile).string(), reflectionDisplayImage(reflection, exposure));
             util::writePng((dir / errFile).string(), heat);
+            const nlohmann::json glass = glassScores(r, ref, extent, exposure);
             metrics["techniques"][t] = {{"psnr_db", psnr},
                                         {"psnr_reflection_db", s.psnrDb},
                                         {"coverage", s.coverage},
@@ -98,7 +118,13 @@ int runCompare(const Options& o) {
                                         {"scored_pixels", s.maskPixels},
                                         {"covered_pixels", s.coveredPixels},
                                         {"images", {{"final", finalFile}, {"reflection", reflFile}, {"error", errFile}}}};
+            metrics["techniques"][t].update(glass);
             summary["cameras"][cam.name][t] = {{"psnr_db", psnr}, {"psnr_reflection_db", s.psnrDb}, {"coverage", s.coverage}, {"gpu_ms", ms}};
+            summary["cameras"][cam.name][t].update(glass);
+            if (!glass.empty())
+                std::printf("ppr: %-8s %-7s glass: PSNR %6.2f dB (reflection alone %6.2f dB)  coverage %.4f  over %llu texels\n",
+                            cam.name.c_str(), t.c_str(), glass["psnr_db_glass"].get<double>(), glass["psnr_reflection_db_glass"].get<double>(),
+                            glass["coverage_glass"].get<double>(), static_cast<unsigned long long>(glass["scored_texels_glass"].get<uint64_t>()));
             finals.push_back({t + " (final)", r.image});
             finals.back().label = t + ": " + fixed(psnr, 1) + " dB as composited";
             reflections.push_back({t + " reflection: " + fixed(s.psnrDb, 1) + " dB, coverage " + fixed(s.coverage, 3),

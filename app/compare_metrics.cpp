@@ -184,4 +184,25 @@ util::Rgba8Image errorHeatMap(const FloatImage& technique, const FloatImage& ref
     return out;
 }
 
+FloatImage glassScreenMask(const FloatImage& referenceAtlas, const std::vector<scene::GlassRegion>& layout, uint32_t width,
+                           uint32_t height) {
+    FloatImage mask;
+    mask.width = width;
+    mask.height = height;
+    mask.rgba.assign(size_t(width) * height * 4, 0.0f);
+    for (const scene::GlassRegion& r : layout) {
+        for (int32_t y = std::max(r.screen.y0, 0); y < std::min(r.screen.y1, int32_t(height)); ++y) {
+            for (int32_t x = std::max(r.screen.x0, 0); x < std::min(r.screen.x1, int32_t(width)); ++x) {
+                const glm::ivec2 t = glm::ivec2(glm::floor(scene::atlasFromScreen(r, glm::vec2(x, y) + 0.5f)));
+                if (t.x < r.atlasOrigin.x || t.y < r.atlasOrigin.y || t.x >= r.atlasOrigin.x + r.atlasSize.x ||
+                    t.y >= r.atlasOrigin.y + r.atlasSize.y || uint32_t(t.x) >= referenceAtlas.width || uint32_t(t.y) >= referenceAtlas.height)
+                    continue;
+                if (referenceAtlas.rgba[(size_t(t.y) * referenceAtlas.width + t.x) * 4 + 3] == gpu::kReflectionHit)
+                    mask.rgba[(size_t(y) * width + x) * 4 + 3] = gpu::kReflectionHit;
+            }
+        }
+    }
+    return mask;
+}
+
 }  // namespace ppr::app

@@ -5,6 +5,7 @@
 // Both images are the RGBA16F reflection image of passes/common/reflection.h read back to the host:
 // rgb = reflected radiance (linear HDR), a = kReflection* code. Errors are measured in display space
 // (passes/tonemap/tonemap.h, the code the tonemap shader runs), so they match what the user sees.
+#include "scene/glass_atlas.hpp"
 #include "util/image_io.hpp"
 
 #include <cstdint>
@@ -41,6 +42,14 @@ constexpr double kPsnrCapDb = 100.0;
 // Empty mask: psnrDb = kPsnrCapDb, coverage = 1, mse = 0, maskPixels = 0 (nothing to get wrong).
 // Throws std::invalid_argument when the sizes differ or an image's rgba has the wrong length.
 ReflectionScore scoreReflection(const FloatImage& technique, const FloatImage& reference, float exposure);
+
+// Glass panels are scored in their reflection atlas (glass_reflect/glass_regions.hpp), texel by texel,
+// with scoreReflection over the texels the reference marks kReflectionHit. For the composited score
+// the screen pixels those texels stand for are needed: this returns a screen-sized image whose alpha
+// is kReflectionHit exactly at the pixels (of the panels' footprints in `layout`) whose atlas texel the
+// reference scores, 0 elsewhere — usable as compositedPsnrDb's `referenceReflection`.
+FloatImage glassScreenMask(const FloatImage& referenceAtlas, const std::vector<scene::GlassRegion>& layout, uint32_t width,
+                           uint32_t height);
 
 // Pixel rectangle; x, y top-left.
 struct PixelRect {

@@ -39,6 +39,7 @@ HeadlessRenderer::~HeadlessRenderer() {
     vkDestroyCommandPool(ctx_.device(), pool_, nullptr);
     vk::destroyBuffer(ctx_, readback_);
     vk::destroyBuffer(ctx_, reflectionReadback_);
+    vk::destroyBuffer(ctx_, glassReadback_);
     vk::destroyImage(ctx_, target_);
 }
 
@@ -67,6 +68,19 @@ void HeadlessRenderer::ensureTargets(VkExtent2D extent) {
     reflectionImport_.finalAccess = graph::Access::HostRead;
 }
 
+void HeadlessRenderer::ensureGlassReadback(uint32_t atlasSize) {
+    if (atlasSize <= glassReadbackSize_) return;
+    vkDeviceWaitIdle(ctx_.device());
+    vk::destroyBuffer(ctx_, glassReadback_);
+    const VkDeviceSize bytes = VkDeviceSize(atlasSize) * atlasSize * 8;
+    glassReadback_ = vk::createBuffer(ctx_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "glass readback");
+    glassImport_ = {};
+    glassImport_.buffer = glassReadback_.buffer;
+    glassImport_.desc = {bytes};
+    glassImport_.finalAccess = graph::Access::HostRead;
+    glassReadbackSize_ = atlasSize;
+}
+
 VkCommandBuffer HeadlessRenderer::beginSlot(uint32_t slot) {
     VK_CHECK(vkResetFences(ctx_.device(), 1, &fences_[slot]));
     VkCommandBuffer cmd = cmds_[slot];
@@ -85,8 +99,10 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
     result.frames = frames;
     std::map<std::string, std::vector<double>> perPass;
     std::vector<double> totals;
-    bool reflectionCopied = false;
+    bool reflectionCopied = false, glassCopied = false;
     uint32_t lastSlot = 0;
+    const uint32_t glassAtlas = static_cast<uint32_t>(renderer_.settings().number("glass_atlas"));
+    if (readReflection) ensureGlassReadback(glassAtlas);
     auto collect = [&](uint32_t slot) {
         if (!slotBusy_[slot]) return;
         VK_CHECK(vkWaitForFences(ctx_.device(), 1, &fences_[slot], VK_TRUE, UINT64_MAX));
@@ -116,12 +132,14 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
         const bool last = f + 1 == frames;
         req.readback = last ? &readbackImport_ : nullptr;
         req.reflectionReadback = last && readReflection ? &reflectionImport_ : nullptr;
+        req.glassReadback = last && readReflection ? &glassImport_ : nullptr;
         req.dumpGraph = last && dumpGraph;
         FrameRecord rec = renderer_.record(cmd, slot, req);
         if (last) {
             lastSlot = slot;
             result.warning = rec.warning;
             reflectionCopied = rec.reflectionCopied;
+            glassCopied = rec.glassCopied;
             result.cullLog = rec.cullLog;
             result.dot = rec.dot;
         }
@@ -143,6 +161,10 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
     if (reflectionCopied) {
         vmaInvalidateAllocation(ctx_.allocator(), reflectionReadback_.allocation, 0, VK_WHOLE_SIZE);
         result.reflection = floatImageFromHalf(reflectionReadback_.mapped, extent.width, extent.height);
+    }
+    if (glassCopied) {
+        vmaInvalidateAllocation(ctx_.allocator(), glassReadback_.allocation, 0, VK_WHOLE_SIZE);
+        result.glassReflection = floatImageFromHalf(glassReadback_.mapped, glassAtlas, glassAtlas);
     }
     for (auto& [name, values] : perPass) result.passMedianMs[name] = median(values);
     result.totalMedianMs = median(totals);

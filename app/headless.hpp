@@ -13,6 +13,7 @@ namespace ppr::app {
 struct CaptureResult {
     util::Rgba8Image image;
     FloatImage reflection;                       // when requested and the technique has one (else 0x0)
+    FloatImage glassReflection;                  // the glass reflection atlas, when requested and the frame had one
     std::map<std::string, double> passMedianMs;  // per pass, median over the frames
     double totalMedianMs = 0.0;                  // median over frames of the per-frame sum
     uint32_t frames = 0;
@@ -65,6 +66,10 @@ private:
     graph::ExternalBuffer readbackImport_;
     vk::Buffer reflectionReadback_;  // RGBA16F
     graph::ExternalBuffer reflectionImport_;
+    vk::Buffer glassReadback_;       // RGBA16F, the glass atlas (sized on first use, grown with --set glass_atlas)
+    graph::ExternalBuffer glassImport_;
+    uint32_t glassReadbackSize_ = 0;
+    void ensureGlassReadback(uint32_t atlasSize);
 };
 
 double median(std::vector<double> values);

@@ -239,17 +239,15 @@ uint32_t Renderer::pprResolveFlags() const {
     return flags;
 }
 
-void Renderer::addGlassAtlas(graph::RenderGraph& g, const passes::FrameInputs& in, uint32_t slot, const FrameRequest& req,
-                             passes::PprProjectInputs& project) {
+uint32_t Renderer::prepareGlass(uint32_t slot, const FrameRequest& req) {
     glassStats_[slot].reset();
     glassUsedHeight_ = 0;
-    project.glass = settings_.get("glass") == "1" && !glassIndices_.empty();
     scene::GlassAtlasLayout layout;
     uint32_t atlasSize = 1;  // bound but unused without glass
-    if (project.glass) {
+    if (settings_.get("glass") == "1" && !glassIndices_.empty()) {
         atlasSize = static_cast<uint32_t>(settings_.number("glass_atlas"));
         layout = scene::packGlassAtlas(reflectorList_, glassIndices_, frameViewProj_, req.camera.position, scene::kNearPlane,
-                                       {in.extent.width, in.extent.height}, atlasSize);
+                                       {req.extent.width, req.extent.height}, atlasSize);
         GlassStats stats;
         stats.atlasSize = atlasSize;
         stats.visible = layout.visible;
@@ -257,12 +255,19 @@ void Renderer::addGlassAtlas(graph::RenderGraph& g, const passes::FrameInputs& i
         stats.scaled = layout.scaled;
         stats.dropped = layout.dropped;
         stats.scale = layout.scale;
-        glassStats_[slot] = stats;
+        stats.layout = layout.regions;
+        glassStats_[slot] = std::move(stats);
         for (const scene::GlassRegion& r : layout.regions)
             glassUsedHeight_ = std::max(glassUsedHeight_, static_cast<uint32_t>(r.atlasOrigin.y + r.atlasSize.y));
         if (layout.regions.empty()) atlasSize = 1;
     }
     glassRegions_->write(slot, layout);
+    return atlasSize;
+}
+
+void Renderer::addGlassAtlas(graph::RenderGraph& g, uint32_t slot, const FrameRequest& req, passes::PprProjectInputs& project) {
+    const uint32_t atlasSize = prepareGlass(slot, req);
+    project.glass = glassStats_[slot].has_value();
     project.glassAtlas = passes::addPprClearPass(g, "ppr.glass.atlas", {atlasSize, atlasSize}, "ppr.glass.clear");
     project.glassRegions = glassRegions_->table(slot);
 }
@@ -317,7 +322,7 @@ std::optional<graph::ImageHandle> Renderer::addReflection(graph::RenderGraph& g,
         project.tilesX = tiles.tilesX;
         project.tilesY = tiles.tilesY;
         project.cullTiles = settings_.get("tiles") == "1";
-        addGlassAtlas(g, in, slot, req, project);
+        addGlassAtlas(g, slot, req, project);
         const passes::PprProjectOutputs scatter = pprProject_->add(g, in, binding, project);
         statsWritten_[slot] = true;
         if (glassStats_[slot] && glassStats_[slot]->regions > 0) {
@@ -368,7 +373,21 @@ std::optional<graph::ImageHandle> Renderer::addReflection(graph::RenderGraph& g,
         return ssr->addTechnique(g, in, inputs);
     }
     if (technique == "floor") return floor_->add(g, in, gb.depth, lit);
-    if (technique == "planar") return planar_->add(g, in, gb, shadowMap, views.planar, reflectorBuffer_->reflectors(slot));
+    if (technique == "planar") {
+        prepareGlass(slot, req);
+        if (!glassStats_[slot] || glassStats_[slot]->regions == 0)
+            return planar_->add(g, in, gb, shadowMap, views.planar, reflectorBuffer_->reflectors(slot));
+        passes::PlanarGlass glass;
+        glass.regions = glassRegions_->table(slot);
+        glass.regionList = glassRegions_->list(slot);
+        glass.regionCount = glassStats_[slot]->regions;
+        glass.atlasSize = glassStats_[slot]->atlasSize;
+        glass.usedHeight = glassUsedHeight_;
+        graph::ImageHandle glassAtlas;
+        graph::ImageHandle reflection = planar_->add(g, in, gb, shadowMap, views.planar, reflectorBuffer_->reflectors(slot), &glass, &glassAtlas);
+        glassReflection_ = passes::GlassReflection{glassAtlas, glassRegions_->table(slot)};
+        return reflection;
+    }
     return std::nullopt;
 }
 
@@ -410,6 +429,10 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
         hdr = glass_->add(g, in, hdr, gb.depth, reflectorBuffer_->reflectors(slot), glassReflection_, &glassOrder_);
         if (glassReflection_ && debugViewIndex(settings_.get("debug")) == gpu::kDebugAtlas)
             hdr = glassReflect_->addAtlasView(g, in, glassReflection_->atlas, hdr);
+    }
+    if (req.glassReadback && glassReflection_) {
+        passes::addReadbackPass(g, "readback.glass", glassReflection_->atlas, g.importBuffer("glass readback", req.glassReadback));
+        rec.glassCopied = true;
     }
     graph::ImageHandle target = req.target ? g.importImage("target", req.target)
                                            : g.createImage("final", {req.extent.width, req.extent.height, kCaptureFormat, 1});

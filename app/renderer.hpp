@@ -47,6 +47,8 @@ struct FrameRequest {
     // atlas (r32f, hiz/hiz.h layout) copied here.
     graph::ExternalBuffer* depthReadback = nullptr;
     graph::ExternalBuffer* hizReadback = nullptr;
+    // When set and the frame has a glass reflection atlas, it is copied here (RGBA16F, glass_atlas² texels).
+    graph::ExternalBuffer* glassReadback = nullptr;
     // Extra passes drawn on top of the final image (the viewer's ImGui); returns the new version.
     std::function<graph::ImageHandle(graph::RenderGraph&, graph::ImageHandle)> overlay;
     bool dumpGraph = false;  // keep the Graphviz text of this frame's graph
@@ -58,6 +60,7 @@ struct FrameRecord {
     std::string warning;  // e.g. a technique that could not run at this size (shown by the viewer)
     bool reflectionCopied = false;
     bool hizCopied = false;
+    bool glassCopied = false;
 };
 
 
@@ -69,6 +72,7 @@ struct GlassStats {
     uint32_t scaled = 0;     // regions scaled down to fit (overflow)
     uint32_t dropped = 0;    // panels without a region (overflow: the farthest first)
     float scale = 1.0f;      // the common scale of the regions
+    std::vector<scene::GlassRegion> layout;  // where each panel's region lies (screen and atlas)
     bool overflowed() const { return scaled > 0 || dropped > 0; }
     // One line saying how the atlas overflowed ("" when it did not).
     std::string overflowMessage() const;
@@ -119,8 +123,9 @@ private:
                                                     graph::ImageHandle shadowMap, const Views& views, const FrameRequest& req,
                                                     FrameRecord& rec);
     uint32_t pprResolveFlags() const;  // holes / filter / antibleed
-    void addGlassAtlas(graph::RenderGraph& g, const passes::FrameInputs& in, uint32_t slot, const FrameRequest& req,
-                       passes::PprProjectInputs& project);
+    // Packs this frame's glass atlas (glassStats_, the region buffer); returns its size (1 without glass).
+    uint32_t prepareGlass(uint32_t slot, const FrameRequest& req);
+    void addGlassAtlas(graph::RenderGraph& g, uint32_t slot, const FrameRequest& req, passes::PprProjectInputs& project);
     passes::HizAtlas addHiz(graph::RenderGraph& g, const passes::FrameInputs& in, const passes::GBuffer& gb, const FrameRequest& req,
                             FrameRecord& rec);
     passes::SsrInputs ssrInputs(const passes::GBuffer& gb, graph::ImageHandle lit, uint32_t slot, const passes::TileLists& tiles) const;

@@ -321,7 +321,7 @@ void buildPuddles(Layout& L, const Materials& M) {
         {"puddle_mirror", 0.0, -7.4, {1, 0, 0}, 2.0, 0.8, 0.7},      // in front of the mirror wall
         {"puddle_stairs", -5.2, -2.0, {1, 0, 0}, 0.8, 0.5, 0.6},     // at the foot of the stairs
         {"puddle_small", -0.6, 4.6, {1, 0, 0}, 0.4, 0.3, 0.6},
-        {"puddle_window", 11.3, -1.0, {1, 0, 0}, 0.45, 1.3, 0.7},    // behind the east glass, seen through it
+        {"puddle_window", 11.0, -1.0, {1, 0, 0}, 0.42, 1.3, 0.7},    // behind the east glass, seen through it
     };
     uint32_t seed = 101;
     for (const Spec& s : specs) {
@@ -383,6 +383,9 @@ void buildProps(Layout& L, const Materials& M) {
     MeshData red;
     addBox(red, {-0.35f, 0.0f, -0.35f}, {0.35f, 0.7f, 0.35f}, 1.0f, AllFaces & ~NegY);
     L.object("crate_red", L.mesh(red, "crate_red", M.red), {-1.2, 0, 3.8}, -30.0);
+    MeshData teal;  // beyond the puddle behind the east glass: what it reflects, seen through the glass
+    addBox(teal, {-0.25f, 0.0f, -0.4f}, {0.25f, 0.8f, 0.4f}, 1.0f, AllFaces & ~NegY);
+    L.object("crate_teal", L.mesh(teal, "crate_teal", M.teal), {11.72, 0, -1.0});
     MeshData white;
     addBox(white, {-0.6f, 0.0f, -0.3f}, {0.6f, 0.9f, 0.3f}, 1.0f, AllFaces & ~NegY);
     L.object("bench_white", L.mesh(white, "bench_white", M.white), {8.0, 0, -3.0}, 60.0);

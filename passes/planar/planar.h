@@ -19,4 +19,14 @@ struct PlanarResolvePush {
 PPR_END
 PPR_SIZE_CHECK(PlanarResolvePush, 16);
 
+PPR_BEGIN
+struct PlanarGlassPush {
+    uint planeGroup;   // glass panels of this plane group take their reflection from this mirrored view
+    uint regionCount;  // entries of the glass region list
+    uint pad0;
+    uint pad1;
+};
+PPR_END
+PPR_SIZE_CHECK(PlanarGlassPush, 16);
+
 #endif

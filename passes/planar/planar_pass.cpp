@@ -3,6 +3,8 @@
 #include "common/clear_pass.hpp"
 #include "common/compute_pass.hpp"
 #include "planar/planar.h"
+#include "glass_reflect/glass_reflect_pass.hpp"
+#include "planar_glass_resolve_comp.h"
 #include "planar_resolve_comp.h"
 #include "ppr_reflect/ppr_reflect_pass.hpp"
 
@@ -18,13 +20,27 @@ PlanarPass::PlanarPass(const vk::Context& ctx, const GBufferPass& gbuffer, const
                            VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,         VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
     layout.pushConstantBytes = sizeof(gpu::PlanarResolvePush);
     resolve_ = shader::createComputePipeline(ctx, PPR_SPIRV(planar_resolve_comp), layout, "planar.resolve");
+    shader::PipelineLayoutDesc glassLayout;
+    glassLayout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,         VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                                VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,         VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
+    glassLayout.pushConstantBytes = sizeof(gpu::PlanarGlassPush);
+    glassResolve_ = shader::createComputePipeline(ctx, PPR_SPIRV(planar_glass_resolve_comp), glassLayout, "planar.glass");
 }
 
 graph::ImageHandle PlanarPass::add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::ImageHandle shadowMap,
-                                   const std::vector<PlanarView>& views, VkBuffer reflectors) const {
+                                   const std::vector<PlanarView>& views, VkBuffer reflectors, const PlanarGlass* glass,
+                                   graph::ImageHandle* glassOut) const {
     // Start from "no reflection" everywhere; each plane group's resolve fills its own pixels.
     graph::ImageHandle reflection = addClearPass(
         g, "planar.clear", g.createImage("reflection", {in.extent.width, in.extent.height, PprReflectPass::kReflectionFormat, 1}), {});
+    if (glass) {
+        const uint32_t size = glass->atlasSize;
+        *glassOut = addClearPass(g, "planar.glass.clear", g.createImage("planar.glass", {size, size, GlassReflectPass::kFormat, 1}), {});
+    }
     if (views.empty()) return reflection;
     GBuffer mirrored = GBufferPass::createTargets(g, "planar.gbuffer", in.extent);
     graph::ImageHandle mirroredColor = g.createImage("planar.color", {in.extent.width, in.extent.height, LightingPass::kColorFormat, 1});
@@ -48,6 +64,24 @@ graph::ImageHandle PlanarPass::add(graph::RenderGraph& g, const FrameInputs& in,
             .storageReadWrite(reflection, &reflection)
             .push(push)
             .dispatch(in.extent, gpu::kPlanarGroupSize);
+        if (!glass || glass->usedHeight == 0) continue;
+        gpu::PlanarGlassPush glassPush{};
+        glassPush.planeGroup = v.planeGroup;
+        glassPush.regionCount = glass->regionCount;
+        ComputePass(g, ctx_, "planar.glass." + plane, glassResolve_)
+            .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
+            .uniform(v.in.frameConstants, v.in.frameConstantsOffset, v.in.frameConstantsSize)
+            .sampled(mirroredColor, in.samplers->nearestClamp)
+            .sampled(mirrored.depth, in.samplers->nearestClamp)
+            .sampled(mirrored.normal, in.samplers->nearestClamp)
+            .sampled(mirrored.reflector, in.samplers->nearestClamp)
+            .sampled(gb.depth, in.samplers->nearestClamp)
+            .hostStorage(reflectors)
+            .hostStorage(glass->regions)
+            .hostStorage(glass->regionList)
+            .storageReadWrite(*glassOut, glassOut)
+            .push(glassPush)
+            .dispatch({glass->atlasSize, glass->usedHeight}, gpu::kPlanarGroupSize);
     }
     return reflection;
 }

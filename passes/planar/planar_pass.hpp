@@ -16,18 +16,26 @@ struct PlanarView {
     FrameInputs in;  // the mirrored view's frame constants
 };
 
+// The glass atlas layout of this frame (glass_reflect/glass_regions.hpp), when glass panels are visible.
+struct PlanarGlass {
+    VkBuffer regions = VK_NULL_HANDLE, regionList = VK_NULL_HANDLE;
+    uint32_t regionCount = 0, atlasSize = 0, usedHeight = 0;
+};
+
 class PlanarPass {
 public:
     PlanarPass(const vk::Context& ctx, const GBufferPass& gbuffer, const LightingPass& lighting);
-    // Returns the reflection image (common/reflection.h); views may be empty (nothing visible).
+    // Returns the reflection image (common/reflection.h); views may be empty (nothing visible). With
+    // `glass`, also resolves the glass panels' regions into `glassOut` (rgba16f atlas, same layout).
     graph::ImageHandle add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::ImageHandle shadowMap,
-                           const std::vector<PlanarView>& views, VkBuffer reflectors) const;
+                           const std::vector<PlanarView>& views, VkBuffer reflectors, const PlanarGlass* glass = nullptr,
+                           graph::ImageHandle* glassOut = nullptr) const;
 
 private:
     const vk::Context& ctx_;
     const GBufferPass& gbuffer_;
     const LightingPass& lighting_;
-    shader::Pipeline resolve_;
+    shader::Pipeline resolve_, glassResolve_;
 };
 
 }  // namespace ppr::passes
