@@ -14,8 +14,11 @@ ReflectorGroups groupReflectors(const std::vector<Reflector>& rs) {
     std::vector<size_t> orientationRep, planeRep;
     for (size_t i = 0; i < n; ++i) {
         const Reflector& r = rs[i];
-        auto o = std::find_if(orientationRep.begin(), orientationRep.end(),
-                              [&](size_t j) { return rs[j].kind == r.kind && glm::dot(rs[j].normal, r.normal) >= kParallelCosine; });
+        // Glass panels each keep their own group: panes overlapping on screen all show their reflection.
+        auto o = r.kind == ReflectorKind::Glass ? orientationRep.end()
+                                                : std::find_if(orientationRep.begin(), orientationRep.end(), [&](size_t j) {
+                                                      return rs[j].kind == r.kind && glm::dot(rs[j].normal, r.normal) >= kParallelCosine;
+                                                  });
         if (o == orientationRep.end()) {
             g.orientationGroup[i] = static_cast<uint32_t>(orientationRep.size());
             orientationRep.push_back(i);

@@ -2,8 +2,8 @@
 // Groupings of reflectors the techniques need, computed once per reflector change (pure logic):
 // - orientation groups: reflectors of one kind whose normals point the same way (floor puddles and
 //   stair treads share one). PPR writes each pixel at most once per orientation — for the shape
-//   nearest to it. Glass and opaque reflectors never share one: a pixel seen through a glass panel
-//   and in a mirror behind it is reflected in both.
+//   nearest to it. Glass panels never share one, with anything: a pixel is reflected in every pane
+//   that shows it (they are transparent) and in the mirror behind them.
 // - plane groups: coplanar reflectors, which one mirrored render serves (the planar ground truth).
 #include "scene/reflector.hpp"
 
