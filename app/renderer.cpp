@@ -383,6 +383,9 @@ std::optional<graph::ImageHandle> Renderer::addReflection(graph::RenderGraph& g,
         glass.regionCount = glassStats_[slot]->regions;
         glass.atlasSize = glassStats_[slot]->atlasSize;
         glass.usedHeight = glassUsedHeight_;
+        glassPlaneGroups_.assign(reflectorBuffer_->groups().planeGroupCount, false);
+        for (const scene::GlassRegion& r : glassStats_[slot]->layout) glassPlaneGroups_[reflectorBuffer_->groups().planeGroup[r.reflectorIndex]] = true;
+        glass.planeGroups = &glassPlaneGroups_;
         graph::ImageHandle glassAtlas;
         graph::ImageHandle reflection = planar_->add(g, in, gb, shadowMap, views.planar, reflectorBuffer_->reflectors(slot), &glass, &glassAtlas);
         glassReflection_ = passes::GlassReflection{glassAtlas, glassRegions_->table(slot)};

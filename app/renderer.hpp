@@ -155,6 +155,7 @@ private:
     std::optional<GlassStats> glassStats_[kFramesInFlight];
     glm::mat4 frameViewProj_{1.0f};                           // the main view's, of the frame being recorded
     uint32_t glassUsedHeight_ = 0;                            // atlas rows holding this frame's regions
+    std::vector<bool> glassPlaneGroups_;                      // plane groups holding a pane with a region (planar)
     std::vector<uint32_t> glassOrder_;  // this frame's transparent draws, back to front (reused)
     vk::Buffer stats_[kFramesInFlight];  // PprFrameStats, host-read after the slot's fence
     graph::ExternalBuffer statsImport_[kFramesInFlight];

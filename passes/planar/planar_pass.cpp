@@ -64,7 +64,7 @@ graph::ImageHandle PlanarPass::add(graph::RenderGraph& g, const FrameInputs& in,
             .storageReadWrite(reflection, &reflection)
             .push(push)
             .dispatch(in.extent, gpu::kPlanarGroupSize);
-        if (!glass || glass->usedHeight == 0) continue;
+        if (!glass || glass->usedHeight == 0 || !(*glass->planeGroups)[v.planeGroup]) continue;
         gpu::PlanarGlassPush glassPush{};
         glassPush.planeGroup = v.planeGroup;
         glassPush.regionCount = glass->regionCount;

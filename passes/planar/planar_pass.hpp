@@ -20,6 +20,7 @@ struct PlanarView {
 struct PlanarGlass {
     VkBuffer regions = VK_NULL_HANDLE, regionList = VK_NULL_HANDLE;
     uint32_t regionCount = 0, atlasSize = 0, usedHeight = 0;
+    const std::vector<bool>* planeGroups = nullptr;  // per plane group: does it hold a pane with a region?
 };
 
 class PlanarPass {
