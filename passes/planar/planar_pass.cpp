@@ -49,16 +49,22 @@ graph::ImageHandle PlanarPass::add(graph::RenderGraph& g, const FrameInputs& in,
         const std::string plane = std::to_string(v.planeGroup);
         mirrored = gbuffer_.add(g, v.in, "planar.gbuffer." + plane, &mirrored);
         mirroredColor = lighting_.add(g, v.in, mirrored, shadowMap, "planar.lighting." + plane, mirroredColor);
+        // Both resolves read the main and mirrored constants, the mirrored view and the main depth
+        // first (planar_visibility.glsl), in this order.
+        auto resolvePass = [&](const std::string& name, const shader::Pipeline& pipeline) {
+            ComputePass pass(g, ctx_, name, pipeline);
+            pass.uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
+                .uniform(v.in.frameConstants, v.in.frameConstantsOffset, v.in.frameConstantsSize)
+                .sampled(mirroredColor, in.samplers->nearestClamp)
+                .sampled(mirrored.depth, in.samplers->nearestClamp)
+                .sampled(mirrored.normal, in.samplers->nearestClamp)
+                .sampled(mirrored.reflector, in.samplers->nearestClamp)
+                .sampled(gb.depth, in.samplers->nearestClamp);
+            return pass;
+        };
         gpu::PlanarResolvePush push{};
         push.planeGroup = v.planeGroup;
-        ComputePass(g, ctx_, "planar.resolve." + plane, resolve_)
-            .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
-            .uniform(v.in.frameConstants, v.in.frameConstantsOffset, v.in.frameConstantsSize)
-            .sampled(mirroredColor, in.samplers->nearestClamp)
-            .sampled(mirrored.depth, in.samplers->nearestClamp)
-            .sampled(mirrored.normal, in.samplers->nearestClamp)
-            .sampled(mirrored.reflector, in.samplers->nearestClamp)
-            .sampled(gb.depth, in.samplers->nearestClamp)
+        resolvePass("planar.resolve." + plane, resolve_)
             .sampled(gb.reflector, in.samplers->nearestClamp)
             .hostStorage(reflectors)
             .storageReadWrite(reflection, &reflection)
@@ -68,14 +74,7 @@ graph::ImageHandle PlanarPass::add(graph::RenderGraph& g, const FrameInputs& in,
         gpu::PlanarGlassPush glassPush{};
         glassPush.planeGroup = v.planeGroup;
         glassPush.regionCount = glass->regionCount;
-        ComputePass(g, ctx_, "planar.glass." + plane, glassResolve_)
-            .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
-            .uniform(v.in.frameConstants, v.in.frameConstantsOffset, v.in.frameConstantsSize)
-            .sampled(mirroredColor, in.samplers->nearestClamp)
-            .sampled(mirrored.depth, in.samplers->nearestClamp)
-            .sampled(mirrored.normal, in.samplers->nearestClamp)
-            .sampled(mirrored.reflector, in.samplers->nearestClamp)
-            .sampled(gb.depth, in.samplers->nearestClamp)
+        resolvePass("planar.glass." + plane, glassResolve_)
             .hostStorage(reflectors)
             .hostStorage(glass->regions)
             .hostStorage(glass->regionList)
