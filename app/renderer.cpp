@@ -81,7 +81,6 @@ Renderer::Renderer(const vk::Context& ctx, const scene::Scene& scene) : ctx_(ctx
     floor_ = std::make_unique<passes::FloorPass>(ctx);
     glass_ = std::make_unique<passes::GlassForwardPass>(ctx, *gpuScene_);
     glassReflect_ = std::make_unique<passes::GlassReflectPass>(ctx);
-    glassRegions_ = std::make_unique<passes::GlassRegionBuffer>(ctx, kFramesInFlight);
     for (uint32_t slot = 0; slot < kFramesInFlight; ++slot) {
         stats_[slot] = vk::createBuffer(ctx, sizeof(gpu::PprFrameStats), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback,
                                         "ppr stats[" + std::to_string(slot) + "]");
@@ -111,7 +110,6 @@ Renderer::~Renderer() {
     floor_.reset();
     glass_.reset();
     glassReflect_.reset();
-    glassRegions_.reset();
     pprBounds_.reset();
     reflectorBuffer_.reset();
     planar_.reset();
@@ -145,7 +143,7 @@ void Renderer::setReflectors(std::vector<scene::Reflector> reflectors) {
     const size_t projected = std::min<size_t>(reflectorList_.size(), gpu::kPprMaxReflectors);
     for (size_t i = 0; i < projected; ++i)
         if (reflectorList_[i].kind == scene::ReflectorKind::Glass) glassIndices_.push_back(static_cast<uint32_t>(i));
-    glassRegions_->reserve(static_cast<uint32_t>(projected));
+    glassRegions_.reserve(static_cast<uint32_t>(projected));
     // Worst case every reflector is its own visible plane: size the per-frame views once per change.
     ensureViewCapacity(1 + static_cast<uint32_t>(reflectorList_.size()));
 }
@@ -261,15 +259,16 @@ uint32_t Renderer::prepareGlass(uint32_t slot, const FrameRequest& req) {
             glassUsedHeight_ = std::max(glassUsedHeight_, static_cast<uint32_t>(r.atlasOrigin.y + r.atlasSize.y));
         if (layout.regions.empty()) atlasSize = 1;
     }
-    glassRegions_->write(slot, layout);
+    glassRegions_.fill(layout);
     return atlasSize;
 }
 
 void Renderer::addGlassAtlas(graph::RenderGraph& g, uint32_t slot, const FrameRequest& req, passes::PprProjectInputs& project) {
     const uint32_t atlasSize = prepareGlass(slot, req);
+    glassRegionBuffers_ = glassRegions_.add(g);  // the projection binds the table even without glass
     project.glass = glassStats_[slot].has_value();
     project.glassAtlas = passes::addPprClearPass(g, "ppr.glass.atlas", {atlasSize, atlasSize}, "ppr.glass.clear");
-    project.glassRegions = glassRegions_->table(slot);
+    project.glassRegions = glassRegionBuffers_.table;
 }
 
 passes::HizAtlas Renderer::addHiz(graph::RenderGraph& g, const passes::FrameInputs& in, const passes::GBuffer& gb, const FrameRequest& req,
@@ -329,13 +328,13 @@ std::optional<graph::ImageHandle> Renderer::addReflection(graph::RenderGraph& g,
             passes::GlassReflectInputs glass;
             glass.atlas = scatter.glassAtlas;
             glass.sceneColor = lit;
-            glass.regions = glassRegions_->table(slot);
-            glass.regionList = glassRegions_->list(slot);
+            glass.regions = glassRegionBuffers_.table;
+            glass.regionList = glassRegionBuffers_.list;
             glass.regionCount = glassStats_[slot]->regions;
             glass.atlasSize = glassStats_[slot]->atlasSize;
             glass.usedHeight = glassUsedHeight_;
             glass.flags = pprResolveFlags();
-            glassReflection_ = passes::GlassReflection{glassReflect_->add(g, in, glass), glassRegions_->table(slot)};
+            glassReflection_ = passes::GlassReflection{glassReflect_->add(g, in, glass), glassRegionBuffers_.table};
         }
 
         passes::PprReflectInputs reflect;
@@ -377,9 +376,10 @@ std::optional<graph::ImageHandle> Renderer::addReflection(graph::RenderGraph& g,
         prepareGlass(slot, req);
         if (!glassStats_[slot] || glassStats_[slot]->regions == 0)
             return planar_->add(g, in, gb, shadowMap, views.planar, reflectorBuffer_->reflectors(slot));
+        glassRegionBuffers_ = glassRegions_.add(g);
         passes::PlanarGlass glass;
-        glass.regions = glassRegions_->table(slot);
-        glass.regionList = glassRegions_->list(slot);
+        glass.regions = glassRegionBuffers_.table;
+        glass.regionList = glassRegionBuffers_.list;
         glass.regionCount = glassStats_[slot]->regions;
         glass.atlasSize = glassStats_[slot]->atlasSize;
         glass.usedHeight = glassUsedHeight_;
@@ -388,7 +388,7 @@ std::optional<graph::ImageHandle> Renderer::addReflection(graph::RenderGraph& g,
         glass.planeGroups = &glassPlaneGroups_;
         graph::ImageHandle glassAtlas;
         graph::ImageHandle reflection = planar_->add(g, in, gb, shadowMap, views.planar, reflectorBuffer_->reflectors(slot), &glass, &glassAtlas);
-        glassReflection_ = passes::GlassReflection{glassAtlas, glassRegions_->table(slot)};
+        glassReflection_ = passes::GlassReflection{glassAtlas, glassRegionBuffers_.table};
         return reflection;
     }
     return std::nullopt;

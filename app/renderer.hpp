@@ -123,7 +123,8 @@ private:
                                                     graph::ImageHandle shadowMap, const Views& views, const FrameRequest& req,
                                                     FrameRecord& rec);
     uint32_t pprResolveFlags() const;  // holes / filter / antibleed
-    // Packs this frame's glass atlas (glassStats_, the region buffer); returns its size (1 without glass).
+    // Packs this frame's glass atlas (glassStats_, the region table's CPU copy); returns the atlas
+    // size (1 without glass). Users add the table's upload (glassRegions_.add) when they read it.
     uint32_t prepareGlass(uint32_t slot, const FrameRequest& req);
     void addGlassAtlas(graph::RenderGraph& g, uint32_t slot, const FrameRequest& req, passes::PprProjectInputs& project);
     passes::HizAtlas addHiz(graph::RenderGraph& g, const passes::FrameInputs& in, const passes::GBuffer& gb, const FrameRequest& req,
@@ -149,7 +150,8 @@ private:
     std::unique_ptr<passes::FloorPass> floor_;
     std::unique_ptr<passes::GlassForwardPass> glass_;
     std::unique_ptr<passes::GlassReflectPass> glassReflect_;
-    std::unique_ptr<passes::GlassRegionBuffer> glassRegions_;
+    passes::GlassRegionTable glassRegions_;                  // this frame's atlas layout, uploaded by the graph
+    passes::GlassRegionBuffers glassRegionBuffers_;          // its graph buffers (valid while recording)
     std::vector<uint32_t> glassIndices_;                     // glass reflectors among those PPR projects
     std::optional<passes::GlassReflection> glassReflection_;  // this frame's, when PPR resolved one
     std::optional<GlassStats> glassStats_[kFramesInFlight];

@@ -53,6 +53,7 @@ graph::ImageHandle GlassForwardPass::add(graph::RenderGraph& g, const FrameInput
                                          const std::vector<uint32_t>* order) const {
     struct Data {
         graph::ImageHandle color, depth, atlas;
+        graph::BufferHandle regions;
     };
     const shader::Pipeline& pipeline = reflection ? withReflection_ : plain_;
     const Data& d = g.addPass<Data>(
@@ -60,10 +61,12 @@ graph::ImageHandle GlassForwardPass::add(graph::RenderGraph& g, const FrameInput
         [&](graph::PassBuilder& b, Data& data) {
             data.color = b.colorAttachment(color, graph::LoadOp::Load);
             data.depth = b.depthAttachmentRead(depth);
-            if (reflection) data.atlas = b.sampled(reflection->atlas);
+            if (reflection) {
+                data.atlas = b.sampled(reflection->atlas);
+                data.regions = b.storageRead(reflection->regions);
+            }
         },
-        [this, in, reflectors, order, &pipeline, regions = reflection ? reflection->regions : VK_NULL_HANDLE](const Data& data,
-                                                                                                             graph::PassContext& pc) {
+        [this, in, reflectors, order, &pipeline, withReflection = reflection.has_value()](const Data& data, graph::PassContext& pc) {
             VkCommandBuffer cmd = pc.cmd();
             pipeline.bind(cmd);
             shader::PushDescriptors push(ctx_);
@@ -71,12 +74,12 @@ graph::ImageHandle GlassForwardPass::add(graph::RenderGraph& g, const FrameInput
                 .storageBuffer(in.scene->drawBuffer())
                 .storageBuffer(in.scene->materialBuffer())
                 .storageBuffer(reflectors);
-            if (regions != VK_NULL_HANDLE)
-                push.storageBuffer(regions).sampled(pc.view(data.atlas), pc.layout(data.atlas), in.samplers->linearClamp);
+            if (withReflection)
+                push.storageBuffer(pc.buffer(data.regions)).sampled(pc.view(data.atlas), pc.layout(data.atlas), in.samplers->linearClamp);
             push.push(cmd, pipeline);
             VkDescriptorSet textures = in.scene->textureSet();
             vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout(), 1, 1, &textures, 0, nullptr);
-            const uint32_t flags = regions != VK_NULL_HANDLE ? gpu::kGlassReflections : 0u;
+            const uint32_t flags = withReflection ? gpu::kGlassReflections : 0u;
             in.scene->drawInOrder(cmd, *order, [&](uint32_t i) { pipeline.pushConstants(cmd, gpu::GlassForwardPush{i, flags, 0, 0}); });
         });
     return d.color;

@@ -11,10 +11,10 @@
 namespace ppr::passes {
 
 // The glass reflection of this frame: the atlas (rgba16f, common/reflection.h) and where each panel's
-// region lies in it (GlassRegionData per reflector index, host-written for the frame's slot).
+// region lies in it (GlassRegionData per reflector index, glass_reflect/glass_regions.hpp).
 struct GlassReflection {
     graph::ImageHandle atlas;
-    VkBuffer regions = VK_NULL_HANDLE;
+    graph::BufferHandle regions;
 };
 
 class GlassForwardPass {

@@ -47,8 +47,8 @@ graph::ImageHandle GlassReflectPass::add(graph::RenderGraph& g, const FrameInput
         .storageRead(inputs.atlas)
         .sampled(inputs.sceneColor, in.samplers->linearClamp)
         .sampled(inputs.sceneColor, in.samplers->nearestClamp)
-        .hostStorage(inputs.regions)
-        .hostStorage(inputs.regionList)
+        .storageRead(inputs.regions)
+        .storageRead(inputs.regionList)
         .storageReadWrite(target, &out)
         .push(push)
         .dispatch({size, inputs.usedHeight}, gpu::kGlassReflectGroupSize);

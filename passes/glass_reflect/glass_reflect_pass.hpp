@@ -9,7 +9,7 @@ namespace ppr::passes {
 struct GlassReflectInputs {
     graph::ImageHandle atlas;      // r32ui, written by ppr.project
     graph::ImageHandle sceneColor;  // the lit scene
-    VkBuffer regions = VK_NULL_HANDLE, regionList = VK_NULL_HANDLE;  // glass_regions.hpp, this frame's slot
+    graph::BufferHandle regions, regionList;  // glass_regions.hpp
     uint32_t regionCount = 0;
     uint32_t atlasSize = 0;        // texels per side
     uint32_t usedHeight = 0;       // atlas rows holding regions: the rest is not dispatched

@@ -1,39 +1,39 @@
 #pragma once
-// This frame's glass atlas layout on the GPU: GlassRegionData per reflector (glass_forward.h) and the
-// list of reflectors that got a region, one host-visible copy per frame in flight, rewritten each
-// frame into buffers sized once per reflector change (no per-frame allocation on the GPU side).
+// This frame's glass atlas layout as graph buffers: GlassRegionData per reflector (glass_forward.h)
+// and the list of reflectors that got a region. The CPU packs the atlas; a transfer pass
+// ("ppr.glass.regions") writes both with vkCmdUpdateBuffer, so the data travels inside the command
+// buffer (no host-visible copies per frame in flight) and every reader declares it to the graph.
 #include "glass_forward/glass_forward.h"
+#include "graph/graph.hpp"
 #include "scene/glass_atlas.hpp"
-#include "vk/context.hpp"
 
 #include <vector>
 
 namespace ppr::passes {
 
-class GlassRegionBuffer {
+struct GlassRegionBuffers {
+    graph::BufferHandle table;  // GlassRegionData[reflectors]
+    graph::BufferHandle list;   // uint[reflectors]: the first `regions` entries are the panes with a region
+};
+
+class GlassRegionTable {
 public:
-    GlassRegionBuffer(const vk::Context& ctx, uint32_t framesInFlight);
-    ~GlassRegionBuffer();
-    GlassRegionBuffer(const GlassRegionBuffer&) = delete;
-    GlassRegionBuffer& operator=(const GlassRegionBuffer&) = delete;
+    // vkCmdUpdateBuffer's limit: 65536 bytes, 2048 reflectors (PPR projects at most 1024).
+    static constexpr uint32_t kMaxReflectors = 65536 / sizeof(gpu::GlassRegionData);
 
-    // Sizes every slot for `reflectorCount` reflectors (waits for the device only when growing).
+    // Sizes the CPU copies for `reflectorCount` reflectors (once per reflector change).
     void reserve(uint32_t reflectorCount);
-    // Writes `slot`'s copy: the layout's regions, every other reflector invalid.
-    void write(uint32_t slot, const scene::GlassAtlasLayout& layout);
-    VkBuffer table(uint32_t slot) const { return slots_[slot].table.buffer; }  // GlassRegionData[reflectors]
-    VkBuffer list(uint32_t slot) const { return slots_[slot].list.buffer; }    // uint[regions]
+    // This frame's layout: its regions, every other reflector invalid.
+    void fill(const scene::GlassAtlasLayout& layout);
+    // Adds the upload pass; the data must stay untouched until the frame is recorded.
+    GlassRegionBuffers add(graph::RenderGraph& g) const;
 
-    // The region of one panel as the shaders see it (pure; unit-tested through the forward mapping).
+    // The region of one panel as the shaders see it.
     static gpu::GlassRegionData pack(const scene::GlassRegion& region);
 
 private:
-    struct Slot {
-        vk::Buffer table, list;
-    };
-    const vk::Context& ctx_;
-    std::vector<Slot> slots_;
-    uint32_t capacity_ = 0;
+    std::vector<gpu::GlassRegionData> table_;
+    std::vector<uint32_t> list_;
 };
 
 }  // namespace ppr::passes

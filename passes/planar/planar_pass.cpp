@@ -76,8 +76,8 @@ graph::ImageHandle PlanarPass::add(graph::RenderGraph& g, const FrameInputs& in,
         glassPush.regionCount = glass->regionCount;
         resolvePass("planar.glass." + plane, glassResolve_)
             .hostStorage(reflectors)
-            .hostStorage(glass->regions)
-            .hostStorage(glass->regionList)
+            .storageRead(glass->regions)
+            .storageRead(glass->regionList)
             .storageReadWrite(*glassOut, glassOut)
             .push(glassPush)
             .dispatch({glass->atlasSize, glass->usedHeight}, gpu::kPlanarGroupSize);

@@ -41,7 +41,7 @@ PprProjectOutputs PprProjectPass::add(graph::RenderGraph& g, const FrameInputs& 
         .storageReadWrite(inputs.stats, &out.stats)
         .hostStorage(r.planeLeaders)
         .storageReadWrite(inputs.glassAtlas, &out.glassAtlas)
-        .hostStorage(inputs.glassRegions)
+        .storageRead(inputs.glassRegions)
         .push(push)
         .dispatch(in.extent, gpu::kPprTileSize);
     return out;

@@ -22,7 +22,7 @@ struct PprProjectInputs {
     uint32_t tilesX = 0, tilesY = 0;
     bool cullTiles = true;            // --set tiles
     graph::ImageHandle glassAtlas;    // r32ui, cleared (glass panels' intermediate buffer)
-    VkBuffer glassRegions = VK_NULL_HANDLE;  // GlassRegionData per reflector (host-written for the frame)
+    graph::BufferHandle glassRegions;  // GlassRegionData per reflector (glass_reflect/glass_regions.hpp)
     bool glass = true;                // --set glass
 };
 
