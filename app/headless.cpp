@@ -133,6 +133,8 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
         req.readback = last ? &readbackImport_ : nullptr;
         req.reflectionReadback = last && readReflection ? &reflectionImport_ : nullptr;
         req.glassReadback = last && readReflection ? &glassImport_ : nullptr;
+        req.ab = ab_;
+        req.abSplit = abSplit_;
         req.dumpGraph = last && dumpGraph;
         FrameRecord rec = renderer_.record(cmd, slot, req);
         if (last) {

@@ -48,6 +48,12 @@ public:
     // Renders one frame of the camera at the extent and reads back its depth and depth hierarchy.
     DepthCapture captureDepth(const scene::CameraPose& camera, VkExtent2D extent);
 
+    // The viewer's A/B view for the following captures (tests).
+    void setAb(AbView view, float split) {
+        ab_ = view;
+        abSplit_ = split;
+    }
+
 private:
     void ensureTargets(VkExtent2D extent);
     // Resets the slot's fence and command buffer and begins recording (the slot must be idle).
@@ -69,6 +75,8 @@ private:
     vk::Buffer glassReadback_;       // RGBA16F, the glass atlas (sized on first use, grown with --set glass_atlas)
     graph::ExternalBuffer glassImport_;
     uint32_t glassReadbackSize_ = 0;
+    AbView ab_ = AbView::Off;
+    float abSplit_ = 0.5f;
     void ensureGlassReadback(uint32_t atlasSize);
 };
 

@@ -80,6 +80,7 @@ Renderer::Renderer(const vk::Context& ctx, const scene::Scene& scene) : ctx_(ctx
     hiz_ = std::make_unique<passes::HizPass>(ctx);
     floor_ = std::make_unique<passes::FloorPass>(ctx);
     glass_ = std::make_unique<passes::GlassForwardPass>(ctx, *gpuScene_);
+    ab_ = std::make_unique<passes::AbComparePass>(ctx);
     glassReflect_ = std::make_unique<passes::GlassReflectPass>(ctx);
     for (uint32_t slot = 0; slot < kFramesInFlight; ++slot) {
         stats_[slot] = vk::createBuffer(ctx, sizeof(gpu::PprFrameStats), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback,
@@ -109,6 +110,7 @@ Renderer::~Renderer() {
     hiz_.reset();
     floor_.reset();
     glass_.reset();
+    ab_.reset();
     glassReflect_.reset();
     pprBounds_.reset();
     reflectorBuffer_.reset();
@@ -190,7 +192,7 @@ gpu::FrameConstants Renderer::mainConstants(const FrameRequest& req) const {
     return f;
 }
 
-Renderer::Views Renderer::writeFrameConstants(uint32_t slot, const FrameRequest& req, const std::string& technique) {
+Renderer::Views Renderer::writeFrameConstants(uint32_t slot, const FrameRequest& req, bool mirroredViews) {
     Views views;
     const gpu::FrameConstants main = mainConstants(req);
     frameViewProj_ = main.viewProj;
@@ -200,7 +202,7 @@ Renderer::Views Renderer::writeFrameConstants(uint32_t slot, const FrameRequest&
         std::memcpy(static_cast<char*>(frameConstants_.mapped) + offset, &f, sizeof(f));
     };
     write(0, main);
-    if (technique == "planar") {
+    if (mirroredViews) {
         // One mirrored view per plane group with a visible reflector, in group order.
         const scene::ReflectorGroups& groups = reflectorBuffer_->groups();
         std::vector<int> representative(groups.planeGroupCount, -1);
@@ -416,7 +418,8 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
         rec.warning = reflectorWarning_;
     }
     reflectorBuffer_->update(slot, reflectorList_, reflectorVersion_);
-    const Views views = writeFrameConstants(slot, req, technique);
+    const bool ab = req.ab != AbView::Off && technique != "planar" && technique != "none";
+    const Views views = writeFrameConstants(slot, req, technique == "planar" || ab);
     const passes::FrameInputs in = frameInputs(slot, 0, req.extent);
 
     graph::RenderGraph g;
@@ -424,8 +427,15 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
     passes::GBuffer gb = gbuffer_->add(g, in);
     graph::ImageHandle lit = lighting_->add(g, in, gb, shadowMap);
     std::optional<graph::ImageHandle> reflection = addReflection(g, technique, slot, in, gb, lit, shadowMap, views, req, rec);
+    std::optional<graph::ImageHandle> reference;  // A/B: the planar ground truth beside the technique
+    if (ab && reflection) reference = planar_->add(g, in, gb, shadowMap, views.planar, reflectorBuffer_->reflectors(slot));
     std::optional<passes::CompositeReflection> blend;
-    if (reflection) blend = passes::CompositeReflection{*reflection, reflectorBuffer_->reflectors(slot)};
+    if (reflection) {
+        graph::ImageHandle shown = *reflection;
+        if (reference && req.ab == AbView::Split)
+            shown = ab_->split(g, in, *reflection, *reference, std::clamp(req.abSplit, 0.0f, 1.0f) * float(req.extent.width));
+        blend = passes::CompositeReflection{shown, reflectorBuffer_->reflectors(slot)};
+    }
     graph::ImageHandle hdr = composite_->add(g, in, gb, lit, blend);
     if (!gpuScene_->transparentDraws().empty()) {
         passes::GlassForwardPass::sortBackToFront(*gpuScene_, req.camera.position, glassOrder_);
@@ -433,6 +443,7 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
         if (glassReflection_ && debugViewIndex(settings_.get("debug")) == gpu::kDebugAtlas)
             hdr = glassReflect_->addAtlasView(g, in, glassReflection_->atlas, hdr);
     }
+    if (reference && req.ab == AbView::ErrorHeat) hdr = ab_->heat(g, in, *reflection, *reference, hdr);
     if (req.glassReadback && glassReflection_) {
         passes::addReadbackPass(g, "readback.glass", glassReflection_->atlas, g.importBuffer("glass readback", req.glassReadback));
         rec.glassCopied = true;

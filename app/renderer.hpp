@@ -7,6 +7,7 @@
 // samplers, the GPU scene, the graph executor and its pool, per-frame constant buffers).
 #include "common/frame.h"
 #include "common/reflector_buffer.hpp"
+#include "ab_compare/ab_compare_pass.hpp"
 #include "composite/composite_pass.hpp"
 #include "floor/floor_pass.hpp"
 #include "hiz/hiz_pass.hpp"
@@ -35,6 +36,9 @@
 
 namespace ppr::app {
 
+// The viewer's A/B comparison of the current technique with the planar ground truth.
+enum class AbView { Off, Split, ErrorHeat };
+
 struct FrameRequest {
     scene::CameraPose camera;
     VkExtent2D extent{};
@@ -52,6 +56,10 @@ struct FrameRequest {
     // Extra passes drawn on top of the final image (the viewer's ImGui); returns the new version.
     std::function<graph::ImageHandle(graph::RenderGraph&, graph::ImageHandle)> overlay;
     bool dumpGraph = false;  // keep the Graphviz text of this frame's graph
+    // A/B (a technique other than planar/none): also render the planar ground truth and show it right
+    // of abSplit (a fraction of the width), or the technique's reflection error as a heat map.
+    AbView ab = AbView::Off;
+    float abSplit = 0.5f;
 };
 
 struct FrameRecord {
@@ -117,7 +125,8 @@ private:
     gpu::FrameConstants mainConstants(const FrameRequest& request) const;
     void ensureViewCapacity(uint32_t views);
     passes::FrameInputs frameInputs(uint32_t slot, uint32_t view, VkExtent2D extent) const;
-    Views writeFrameConstants(uint32_t slot, const FrameRequest& request, const std::string& technique);
+    // Mirrored views (one per visible plane group) when `mirroredViews` (planar, or A/B against it).
+    Views writeFrameConstants(uint32_t slot, const FrameRequest& request, bool mirroredViews);
     std::optional<graph::ImageHandle> addReflection(graph::RenderGraph& g, const std::string& technique, uint32_t slot,
                                                     const passes::FrameInputs& in, const passes::GBuffer& gb, graph::ImageHandle lit,
                                                     graph::ImageHandle shadowMap, const Views& views, const FrameRequest& req,
@@ -149,6 +158,7 @@ private:
     std::unique_ptr<passes::HizPass> hiz_;
     std::unique_ptr<passes::FloorPass> floor_;
     std::unique_ptr<passes::GlassForwardPass> glass_;
+    std::unique_ptr<passes::AbComparePass> ab_;
     std::unique_ptr<passes::GlassReflectPass> glassReflect_;
     passes::GlassRegionTable glassRegions_;                  // this frame's atlas layout, uploaded by the graph
     passes::GlassRegionBuffers glassRegionBuffers_;          // its graph buffers (valid while recording)

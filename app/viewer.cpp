@@ -166,6 +166,8 @@ private:
     TimingHistory timings_;
     std::optional<gpu::PprFrameStats> pprStats_;
     std::optional<GlassStats> glassStats_;
+    AbView ab_ = AbView::Off;
+    float abSplit_ = 0.5f;
     std::deque<double> frameMs_, cpuMs_;
     std::string status_;
     std::string warning_;  // from the renderer (e.g. PPR refused at this size), shown in the panel
@@ -308,6 +310,8 @@ void Viewer::buildUi() {
     m.warning = warning_;
     m.timings = &timings_;
     m.pprStats = pprStats_;
+    m.ab = &ab_;
+    m.abSplit = &abSplit_;
     m.glassStats = glassStats_;
     m.reflectors = static_cast<uint32_t>(renderer_->reflectors().size());
     m.reflectorsProjected = std::min(m.reflectors, gpu::kPprMaxReflectors);
@@ -362,7 +366,14 @@ bool Viewer::renderFrame(uint32_t slot) {
     req.extent = extent;
     req.target = &target;
     req.overlay = [this](graph::RenderGraph& g, graph::ImageHandle image) { return imgui_->addPass(g, image); };
+    req.ab = ab_;
+    req.abSplit = abSplit_;
+    // Hold-to-compare: while B is held the frame shows the planar ground truth.
+    const std::string technique = renderer_->technique();
+    const bool holdCompare = !imgui_->wantsKeyboard() && glfwGetKey(window_.handle, GLFW_KEY_B) == GLFW_PRESS;
+    if (holdCompare) renderer_->setTechnique("planar");
     const FrameRecord rec = renderer_->record(cmd, slot, req);
+    if (holdCompare) renderer_->setTechnique(technique);
     if (!rec.cullLog.empty() && frames_ == 0) std::fprintf(stderr, "%s", rec.cullLog.c_str());
     warning_ = rec.warning;
     VK_CHECK(vkEndCommandBuffer(cmd));

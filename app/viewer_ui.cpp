@@ -283,6 +283,14 @@ PanelActions drawPanel(PanelModel& m) {
             ImGui::EndCombo();
         }
         ImGui::TextDisabled("planar = ground truth (re-renders the scene per plane)");
+        if (m.ab && m.abSplit) {
+            // A/B: the planar ground truth beside the technique, or the technique's error against it.
+            const char* modes[] = {"off", "split (planar on the right)", "error heat map"};
+            int mode = static_cast<int>(*m.ab);
+            if (ImGui::Combo("A/B with planar", &mode, modes, 3)) *m.ab = static_cast<AbView>(mode);
+            if (*m.ab == AbView::Split) ImGui::SliderFloat("split", m.abSplit, 0.0f, 1.0f, "%.2f");
+            ImGui::TextDisabled("hold B: show the planar ground truth");
+        }
         if (!m.warning.empty()) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.2f, 1.0f), "%s", m.warning.c_str());
         if (m.technique == "ppr" && m.pprStats) {
             // The counts behind tiles / indirect: what the classification found and what culling kept.

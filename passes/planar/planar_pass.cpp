@@ -36,7 +36,7 @@ graph::ImageHandle PlanarPass::add(graph::RenderGraph& g, const FrameInputs& in,
                                    graph::ImageHandle* glassOut) const {
     // Start from "no reflection" everywhere; each plane group's resolve fills its own pixels.
     graph::ImageHandle reflection = addClearPass(
-        g, "planar.clear", g.createImage("reflection", {in.extent.width, in.extent.height, PprReflectPass::kReflectionFormat, 1}), {});
+        g, "planar.clear", g.createImage("planar.reflection", {in.extent.width, in.extent.height, PprReflectPass::kReflectionFormat, 1}), {});
     if (glass) {
         const uint32_t size = glass->atlasSize;
         *glassOut = addClearPass(g, "planar.glass.clear", g.createImage("planar.glass", {size, size, GlassReflectPass::kFormat, 1}), {});

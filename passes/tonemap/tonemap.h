@@ -14,6 +14,14 @@ PPR_INLINE vec3 linearToSrgb(vec3 c) {
 }
 // HDR radiance → display value in [0, 1] (what the 8-bit output stores, before quantisation).
 PPR_INLINE vec3 displayFromRadiance(vec3 hdr, float exposure) { return linearToSrgb(acesFilmic(hdr * exposure)); }
+// The inverse, for overlays that must show an exact display colour (the A/B error heat map): display
+// values above 0.99 map to 0.99 (the fit reaches 1 only at infinity).
+PPR_INLINE vec3 srgbToLinear(vec3 c) { return mix(c / 12.92f, pow((c + 0.055f) / 1.055f, vec3(2.4f)), step(vec3(0.04045f), c)); }
+PPR_INLINE vec3 radianceFromDisplay(vec3 display, float exposure) {
+    vec3 y = clamp(srgbToLinear(clamp(display, 0.0f, 1.0f)), 0.0f, 0.99f);
+    vec3 a = 2.51f - 2.43f * y, b = 0.03f - 0.59f * y, c = -0.14f * y;
+    return (-b + sqrt(b * b - 4.0f * a * c)) / (2.0f * a) / exposure;
+}
 PPR_END
 
 #endif
