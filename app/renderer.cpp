@@ -81,6 +81,7 @@ Renderer::Renderer(const vk::Context& ctx, const scene::Scene& scene) : ctx_(ctx
     floor_ = std::make_unique<passes::FloorPass>(ctx);
     glass_ = std::make_unique<passes::GlassForwardPass>(ctx, *gpuScene_);
     ab_ = std::make_unique<passes::AbComparePass>(ctx);
+    pick_ = std::make_unique<passes::PickPass>(ctx);
     glassReflect_ = std::make_unique<passes::GlassReflectPass>(ctx);
     for (uint32_t slot = 0; slot < kFramesInFlight; ++slot) {
         stats_[slot] = vk::createBuffer(ctx, sizeof(gpu::PprFrameStats), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback,
@@ -91,6 +92,7 @@ Renderer::Renderer(const vk::Context& ctx, const scene::Scene& scene) : ctx_(ctx
     }
     planar_ = std::make_unique<passes::PlanarPass>(ctx, *gbuffer_, *lighting_);
     reflectorBuffer_ = std::make_unique<passes::ReflectorBuffer>(ctx, kFramesInFlight);
+    surfaces_ = std::make_unique<passes::SurfaceBindingBuffer>(ctx, kFramesInFlight, static_cast<uint32_t>(scene.draws.size()));
     executor_ = std::make_unique<graph::GraphExecutor>(ctx, kFramesInFlight);
     const VkDeviceSize align = 256;  // ≥ minUniformBufferOffsetAlignment on every known device
     frameStride_ = (sizeof(gpu::FrameConstants) + align - 1) / align * align;
@@ -111,9 +113,11 @@ Renderer::~Renderer() {
     floor_.reset();
     glass_.reset();
     ab_.reset();
+    pick_.reset();
     glassReflect_.reset();
     pprBounds_.reset();
     reflectorBuffer_.reset();
+    surfaces_.reset();
     planar_.reset();
     pprReflect_.reset();
     pprProject_.reset();
@@ -141,6 +145,15 @@ void Renderer::setReflectors(std::vector<scene::Reflector> reflectors) {
                             std::to_string(gpu::kPprMaxReflectors) + ": the last " + std::to_string(extra) + " (from '" +
                             reflectorList_[gpu::kPprMaxReflectors].name + "' on) get no PPR reflection";
     }
+    // Surfaces follow the list by name (and geometry); reflectors no mesh belongs to are found per pixel.
+    const std::vector<int> binding = scene::bindDraws(scene_, reflectorList_);
+    std::vector<bool> bound(reflectorList_.size(), false);
+    for (int r : binding)
+        if (r >= 0) bound[size_t(r)] = true;
+    std::vector<uint32_t> loose;
+    for (size_t i = 0; i < std::min<size_t>(reflectorList_.size(), gpu::kPprMaxReflectors); ++i)
+        if (!bound[i] && reflectorList_[i].kind == scene::ReflectorKind::Opaque) loose.push_back(static_cast<uint32_t>(i));
+    surfaces_->set(binding, loose, reflectorVersion_);
     glassIndices_.clear();
     const size_t projected = std::min<size_t>(reflectorList_.size(), gpu::kPprMaxReflectors);
     for (size_t i = 0; i < projected; ++i)
@@ -167,6 +180,10 @@ passes::FrameInputs Renderer::frameInputs(uint32_t slot, uint32_t view, VkExtent
     in.samplers = &samplers_;
     in.scene = gpuScene_.get();
     in.extent = extent;
+    in.drawReflectors = surfaces_->drawReflectors(slot);
+    in.reflectors = reflectorBuffer_->reflectors(slot);
+    in.looseReflectors = surfaces_->loose(slot);
+    in.looseCount = surfaces_->looseCount();
     return in;
 }
 
@@ -418,6 +435,7 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
         rec.warning = reflectorWarning_;
     }
     reflectorBuffer_->update(slot, reflectorList_, reflectorVersion_);
+    surfaces_->update(slot);
     const bool ab = req.ab != AbView::Off && technique != "planar" && technique != "none";
     const Views views = writeFrameConstants(slot, req, technique == "planar" || ab);
     const passes::FrameInputs in = frameInputs(slot, 0, req.extent);
@@ -426,6 +444,7 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
     graph::ImageHandle shadowMap = shadow_->add(g, in, static_cast<uint32_t>(settings_.number("shadowres")));
     passes::GBuffer gb = gbuffer_->add(g, in);
     graph::ImageHandle lit = lighting_->add(g, in, gb, shadowMap);
+    if (req.pickPixel && req.pickResult) pick_->add(g, in, gb, *req.pickPixel, g.importBuffer("pick", req.pickResult));
     std::optional<graph::ImageHandle> reflection = addReflection(g, technique, slot, in, gb, lit, shadowMap, views, req, rec);
     std::optional<graph::ImageHandle> reference;  // A/B: the planar ground truth beside the technique
     if (ab && reflection) reference = planar_->add(g, in, gb, shadowMap, views.planar, reflectorBuffer_->reflectors(slot));

@@ -7,6 +7,7 @@
 // samplers, the GPU scene, the graph executor and its pool, per-frame constant buffers).
 #include "common/frame.h"
 #include "common/reflector_buffer.hpp"
+#include "common/surface_binding.hpp"
 #include "ab_compare/ab_compare_pass.hpp"
 #include "composite/composite_pass.hpp"
 #include "floor/floor_pass.hpp"
@@ -20,6 +21,7 @@
 #include "planar/planar_pass.hpp"
 #include "ppr_bounds/ppr_bounds_pass.hpp"
 #include "ppr_common/tiles.h"
+#include "pick/pick_pass.hpp"
 #include "ppr_project/ppr_project_pass.hpp"
 #include "ppr_reflect/ppr_reflect_pass.hpp"
 #include "settings.hpp"
@@ -60,6 +62,9 @@ struct FrameRequest {
     // of abSplit (a fraction of the width), or the technique's reflection error as a heat map.
     AbView ab = AbView::Off;
     float abSplit = 0.5f;
+    // The reflector editor: the G-buffer under this pixel (passes/pick/pick.h PickResult) into `pickResult`.
+    std::optional<glm::ivec2> pickPixel;
+    graph::ExternalBuffer* pickResult = nullptr;
 };
 
 struct FrameRecord {
@@ -159,6 +164,7 @@ private:
     std::unique_ptr<passes::FloorPass> floor_;
     std::unique_ptr<passes::GlassForwardPass> glass_;
     std::unique_ptr<passes::AbComparePass> ab_;
+    std::unique_ptr<passes::PickPass> pick_;
     std::unique_ptr<passes::GlassReflectPass> glassReflect_;
     passes::GlassRegionTable glassRegions_;                  // this frame's atlas layout, uploaded by the graph
     passes::GlassRegionBuffers glassRegionBuffers_;          // its graph buffers (valid while recording)
@@ -175,6 +181,7 @@ private:
     std::string reflectorWarning_;
     std::unique_ptr<passes::PlanarPass> planar_;
     std::unique_ptr<passes::ReflectorBuffer> reflectorBuffer_;
+    std::unique_ptr<passes::SurfaceBindingBuffer> surfaces_;  // which reflector each surface belongs to
     std::unique_ptr<graph::GraphExecutor> executor_;
     std::string technique_ = "none";
     std::vector<scene::Reflector> reflectorList_;

@@ -59,4 +59,12 @@ std::vector<ResolvedCamera> resolveCameras(const scene::Scene& s, const std::str
                              " (known: " + (known.empty() ? "none" : known) + "; or give x,y,z,yawDeg,pitchDeg[,fovYDeg])");
 }
 
+std::string reflectorFilePath(const Options& o) {
+    if (!o.reflectors.empty()) return o.reflectors;
+    const std::string scenePath = o.scene.empty() ? defaultScenePath() : o.scene;
+    if (scenePath.rfind("stress:", 0) == 0) return {};
+    const std::filesystem::path p(scenePath);
+    return (p.parent_path() / (p.stem().string() + ".reflectors.json")).string();
+}
+
 }  // namespace ppr::app

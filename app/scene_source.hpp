@@ -10,6 +10,9 @@ namespace ppr::app {
 
 std::string defaultScenePath();  // built by content/ at build time
 scene::Scene loadScene(const Options& options);
+// The reflector file the editor saves to: --reflectors, else the scene's "<stem>.reflectors.json"
+// sidecar ("" for the built-in stress scene).
+std::string reflectorFilePath(const Options& options);
 
 struct ResolvedCamera {
     std::string name;

@@ -7,6 +7,8 @@
 //   SIGINT / SIGTERM            close the window cleanly (exit code 0 unless validation errors)
 #include "viewer.hpp"
 
+#include "editor_ui.hpp"
+
 #include "headless.hpp"
 #include "report.hpp"
 #include "scene_source.hpp"
@@ -18,6 +20,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -168,6 +171,14 @@ private:
     std::optional<GlassStats> glassStats_;
     AbView ab_ = AbView::Off;
     float abSplit_ = 0.5f;
+    // The reflector editor: the document, its window, and the G-buffer pick a view click waits for.
+    std::unique_ptr<ReflectorDocument> document_;
+    std::unique_ptr<ReflectorEditorUi> editor_;
+    vk::Buffer pickBuffer_[Renderer::kFramesInFlight];
+    graph::ExternalBuffer pickImport_[Renderer::kFramesInFlight];
+    bool pickIssued_[Renderer::kFramesInFlight]{};
+    std::optional<ViewClick> pendingClick_;
+    glm::ivec2 pickPixel_{0};
     std::deque<double> frameMs_, cpuMs_;
     std::string status_;
     std::string warning_;  // from the renderer (e.g. PPR refused at this size), shown in the panel
@@ -210,6 +221,15 @@ Viewer::Viewer(const Options& o, vk::Context& ctx, const scene::Scene& scene) : 
     }
 
     renderer_ = std::make_unique<Renderer>(ctx, scene);
+    document_ = std::make_unique<ReflectorDocument>(scene.reflectors, reflectorFilePath(o));
+    editor_ = std::make_unique<ReflectorEditorUi>(*document_, scene);
+    for (uint32_t i = 0; i < Renderer::kFramesInFlight; ++i) {
+        pickBuffer_[i] = vk::createBuffer(ctx, sizeof(gpu::PickResult), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::Readback,
+                                          "pick[" + std::to_string(i) + "]");
+        pickImport_[i].buffer = pickBuffer_[i].buffer;
+        pickImport_[i].desc = {sizeof(gpu::PickResult)};
+        pickImport_[i].finalAccess = graph::Access::HostRead;
+    }
     for (const std::string& kv : o.sets) renderer_->settings().apply(kv);
     renderer_->setTechnique(o.technique);
     renderer_->prepareTargetFormat(swapchain_->format());
@@ -240,7 +260,10 @@ Viewer::Viewer(const Options& o, vk::Context& ctx, const scene::Scene& scene) : 
     }
 }
 
-Viewer::~Viewer() { vkDeviceWaitIdle(ctx_.device()); }
+Viewer::~Viewer() {
+    vkDeviceWaitIdle(ctx_.device());
+    for (vk::Buffer& b : pickBuffer_) vk::destroyBuffer(ctx_, b);
+}
 
 bool Viewer::recreateSwapchain() {
     int w = 0, h = 0;
@@ -318,6 +341,18 @@ void Viewer::buildUi() {
     m.status = status_;
     const PanelActions a = drawPanel(m);
     status_ = m.status;
+    const VkExtent2D extent = swapchain_->extent();
+    EditorView view;
+    view.size = glm::vec2(extent.width, extent.height);
+    view.eye = camera_.pose.position;
+    view.viewProj = scene::projectionMatrix(camera_.pose.fovYDeg, view.size.x / std::max(view.size.y, 1.0f), scene::kNearPlane) *
+                    scene::viewMatrix(camera_.pose);
+    if (editor_->draw(view, !imgui_->wantsMouse(), !imgui_->wantsKeyboard())) renderer_->setReflectors(document_->reflectors());
+    glm::ivec2 pixel;
+    if (const std::optional<ViewClick> click = editor_->takeClick(pixel)) {
+        pendingClick_ = click;
+        pickPixel_ = pixel;
+    }
     imgui_->endFrame();
 
     if (a.jumpToCamera >= 0 && a.jumpToCamera < static_cast<int>(cameras_.size())) {
@@ -368,6 +403,11 @@ bool Viewer::renderFrame(uint32_t slot) {
     req.overlay = [this](graph::RenderGraph& g, graph::ImageHandle image) { return imgui_->addPass(g, image); };
     req.ab = ab_;
     req.abSplit = abSplit_;
+    if (pendingClick_) {  // the G-buffer under the click, read back once this slot's fence signals
+        req.pickPixel = pickPixel_;
+        req.pickResult = &pickImport_[slot];
+        pickIssued_[slot] = true;
+    }
     // Hold-to-compare: while B is held the frame shows the planar ground truth.
     const std::string technique = renderer_->technique();
     const bool holdCompare = !imgui_->wantsKeyboard() && glfwGetKey(window_.handle, GLFW_KEY_B) == GLFW_PRESS;
@@ -462,6 +502,14 @@ void Viewer::run(uint64_t maxFrames, uint64_t captureAt) {
             timings_.add(renderer_->timings(slot));
             if (auto stats = renderer_->frameStats(slot)) pprStats_ = stats;
             glassStats_ = renderer_->glassStats(slot);
+            if (pickIssued_[slot]) {
+                pickIssued_[slot] = false;
+                vmaInvalidateAllocation(ctx_.allocator(), pickBuffer_[slot].allocation, 0, VK_WHOLE_SIZE);
+                gpu::PickResult pick;
+                std::memcpy(&pick, pickBuffer_[slot].mapped, sizeof pick);
+                if (pendingClick_ && editor_->applyPick(*pendingClick_, pick)) renderer_->setReflectors(document_->reflectors());
+                pendingClick_.reset();
+            }
             sync_.busy[slot] = false;
         }
         // Every frame at or before frames_ - kFramesInFlight has completed: unused transients can go.

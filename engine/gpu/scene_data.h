@@ -8,7 +8,7 @@ struct DrawData {
     mat4 world;
     mat4 normalMatrix;  // inverse-transpose of world (upper 3x3 used)
     uint material;
-    uint reflectorId;   // reflector index + 1, 0 = not a reflector surface
+    uint reflectorId;   // load-time binding (index + 1, 0 = none); the frame's is common/surface_binding.hpp
     uint pad0;
     uint pad1;
 };
@@ -28,7 +28,7 @@ struct MaterialData {
 // Push constants of the mesh passes (shadow, gbuffer).
 struct DrawPush {
     uint drawIndex;
-    uint pad0;
+    uint looseCount;  // gbuffer: loose reflectors tested per pixel (gbuffer/gbuffer.h)
     uint pad1;
     uint pad2;
 };

@@ -33,6 +33,26 @@ bool reflectiveMaterial(const Scene& scene, const Mesh& mesh) {
 
 }  // namespace
 
+std::vector<int> bindDraws(const Scene& scene, const std::vector<Reflector>& reflectors, float tolerance) {
+    auto named = [&](const std::string& name) {
+        for (size_t r = 0; r < reflectors.size(); ++r)
+            if (!name.empty() && reflectors[r].name == name) return static_cast<int>(r);
+        return -1;
+    };
+    std::vector<int> binding(scene.draws.size(), -1);
+    for (size_t i = 0; i < scene.draws.size(); ++i) {
+        const DrawItem& draw = scene.draws[i];
+        int r = -1;
+        if (draw.reflector >= 0 && size_t(draw.reflector) < scene.reflectors.size()) r = named(scene.reflectors[size_t(draw.reflector)].name);
+        if (r < 0) r = named(draw.nodeName);
+        if (r < 0 && draw.mesh < scene.meshes.size() && reflectiveMaterial(scene, scene.meshes[draw.mesh]))
+            for (size_t k = 0; k < reflectors.size() && r < 0; ++k)
+                if (liesOn(scene, draw, reflectors[k], tolerance)) r = static_cast<int>(k);
+        binding[i] = r;
+    }
+    return binding;
+}
+
 void bindDrawsToReflectors(Scene& scene, float tolerance) {
     const int count = static_cast<int>(scene.reflectors.size());
     for (DrawItem& draw : scene.draws) {

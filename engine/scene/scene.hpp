@@ -91,5 +91,9 @@ Scene loadGltf(const std::string& path, const LoadOptions& options = {});
 // Binds each draw to the reflector whose rectangle contains all of its (world-space) vertices on the
 // plane (within `tolerance` metres); node extras / name matches take precedence. Called by loadGltf.
 void bindDrawsToReflectors(Scene& scene, float tolerance = 0.01f);
+// The same rules against another reflector list (the editor's, as it changes): per draw, the index
+// in `reflectors` of the reflector it was bound to at load (matched by name), else the one named like
+// its node, else (reflective materials) one whose rectangle holds its geometry; -1 for none.
+std::vector<int> bindDraws(const Scene& scene, const std::vector<Reflector>& reflectors, float tolerance = 0.01f);
 
 }  // namespace ppr::scene

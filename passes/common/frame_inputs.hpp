@@ -13,6 +13,10 @@ struct FrameInputs {
     const shader::Samplers* samplers = nullptr;
     const gpu::GpuScene* scene = nullptr;
     VkExtent2D extent{};
+    // Surfaces → reflectors (common/surface_binding.hpp): per-draw ids, the reflectors (ReflectorData[])
+    // and the loose ones the G-buffer tests per pixel.
+    VkBuffer drawReflectors = VK_NULL_HANDLE, reflectors = VK_NULL_HANDLE, looseReflectors = VK_NULL_HANDLE;
+    uint32_t looseCount = 0;
 };
 
 // Vertex layout of scene::Vertex for the mesh passes.

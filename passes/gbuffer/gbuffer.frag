@@ -3,9 +3,15 @@
 #include "common/bindings.glsl"
 #extension GL_EXT_nonuniform_qualifier : require
 #include "gpu/scene_data.h"
+#include "common/reflector_data.h"
+#include "gbuffer/gbuffer.h"
 
 layout(set = 0, binding = 1, scalar) readonly buffer Draws { DrawData draws[]; };
 layout(set = 0, binding = 2, scalar) readonly buffer Materials { MaterialData materials[]; };
+layout(set = 0, binding = 3, scalar) readonly buffer DrawReflectors { uint drawReflectors[]; };  // per draw, id
+layout(set = 0, binding = 4, scalar) readonly buffer Reflectors { ReflectorData reflectors[]; };
+layout(set = 0, binding = 5, scalar) readonly buffer Loose { uint looseReflectors[]; };
+layout(push_constant, scalar) uniform Push { DrawPush pc; };
 layout(set = 1, binding = 0) uniform sampler2D textures[];
 
 layout(location = 0) in vec3 vNormal;
@@ -46,5 +52,17 @@ void main() {
     outAlbedo = vec4(base.rgb, 1.0);
     outMaterial = vec4(clamp(m.roughness * mr.g, 0.02, 1.0), clamp(m.metallic * mr.b, 0.0, 1.0),
                        (m.flags & kMaterialReflective) != 0u ? 1.0 : 0.0, 0.0);
-    outReflector = d.reflectorId;
+    uint id = drawReflectors[vDraw];
+    if (id == 0u && pc.looseCount > 0u) {
+        // A reflector no mesh belongs to covers whatever surface lies on its rectangle.
+        vec3 p = worldFromDepth(gl_FragCoord.xy * frame.invScreenSize, gl_FragCoord.z);
+        float tolerance = kLooseSurfaceTolerance + kLooseSurfaceTolerancePerMetre * distance(p, frame.cameraPos.xyz);
+        for (uint k = 0u; k < pc.looseCount && id == 0u; ++k) {
+            ReflectorData r = reflectors[looseReflectors[k]];
+            vec3 l = p - r.center;
+            if (abs(dot(l, r.normal)) <= tolerance && abs(dot(l, r.tangent)) <= r.halfExtentU && abs(dot(l, r.bitangent)) <= r.halfExtentV)
+                id = looseReflectors[k] + 1u;
+        }
+    }
+    outReflector = id;
 }

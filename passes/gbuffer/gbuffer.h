@@ -12,4 +12,10 @@ PPR_CONST(uint, kGBufferNormal, 0u)
 PPR_CONST(uint, kGBufferAlbedo, 1u)
 PPR_CONST(uint, kGBufferMaterial, 2u)
 PPR_CONST(uint, kGBufferReflector, 3u)
+// Reflectors no mesh belongs to (e.g. snapped onto the floor in the editor) are found per pixel: a
+// surface point within this distance of such a rectangle's plane (metres, plus a fraction of its
+// distance to the camera) and inside it takes its id. At most this many are tested.
+PPR_CONST(uint, kMaxLooseReflectors, 32u)
+PPR_CONST(float, kLooseSurfaceTolerance, 0.01f)
+PPR_CONST(float, kLooseSurfaceTolerancePerMetre, 0.002f)
 #endif

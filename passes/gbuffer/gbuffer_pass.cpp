@@ -8,7 +8,8 @@ namespace ppr::passes {
 
 GBufferPass::GBufferPass(const vk::Context& ctx, const gpu::GpuScene& scene) : ctx_(ctx) {
     shader::PipelineLayoutDesc layout;
-    layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
+    layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                           VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
     layout.stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     layout.pushConstantBytes = sizeof(gpu::DrawPush);
     layout.extraSets = {scene.textureSetLayout()};
@@ -52,10 +53,13 @@ GBuffer GBufferPass::add(graph::RenderGraph& g, const FrameInputs& in, const std
                 .uniformBuffer(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
                 .storageBuffer(in.scene->drawBuffer())
                 .storageBuffer(in.scene->materialBuffer())
+                .storageBuffer(in.drawReflectors)
+                .storageBuffer(in.reflectors)
+                .storageBuffer(in.looseReflectors)
                 .push(cmd, pipeline_);
             VkDescriptorSet textures = in.scene->textureSet();
             vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.layout(), 1, 1, &textures, 0, nullptr);
-            in.scene->drawOpaque(cmd, [&](uint32_t i) { pipeline_.pushConstants(cmd, gpu::DrawPush{i, 0, 0, 0}); });
+            in.scene->drawOpaque(cmd, [&](uint32_t i) { pipeline_.pushConstants(cmd, gpu::DrawPush{i, in.looseCount, 0, 0}); });
         });
     return d;
 }

@@ -15,9 +15,10 @@
 layout(set = 0, binding = 1, scalar) readonly buffer Draws { DrawData draws[]; };
 layout(set = 0, binding = 2, scalar) readonly buffer Materials { MaterialData materials[]; };
 layout(set = 0, binding = 3, scalar) readonly buffer Reflectors { ReflectorData reflectors[]; };
+layout(set = 0, binding = 4, scalar) readonly buffer DrawReflectors { uint drawReflectors[]; };  // common/surface_binding.hpp
 #ifdef GLASS_REFLECTION
-layout(set = 0, binding = 4, scalar) readonly buffer Regions { GlassRegionData regions[]; };
-layout(set = 0, binding = 5) uniform sampler2D reflectionAtlas;  // rgba16f, common/reflection.h alpha codes
+layout(set = 0, binding = 5, scalar) readonly buffer Regions { GlassRegionData regions[]; };
+layout(set = 0, binding = 6) uniform sampler2D reflectionAtlas;  // rgba16f, common/reflection.h alpha codes
 #endif
 layout(set = 1, binding = 0) uniform sampler2D textures[];
 layout(push_constant, scalar) uniform Push { GlassForwardPush pc; };
@@ -37,13 +38,14 @@ void main() {
     vec3 world = worldFromDepth(gl_FragCoord.xy * frame.invScreenSize, gl_FragCoord.z);
     vec3 v = normalize(frame.cameraPos.xyz - world);
     vec3 n = normalize(vNormal);
-    float reflectance = d.reflectorId != 0u ? reflectors[d.reflectorId - 1u].reflectance : 1.0;
+    uint reflectorId = drawReflectors[vDraw];
+    float reflectance = reflectorId != 0u ? reflectors[reflectorId - 1u].reflectance : 1.0;
     float weight = fresnelSchlick(abs(dot(n, v)), vec3(0.04)).x * reflectance;
     vec3 reflection = vec3(0.0);
 #ifdef GLASS_REFLECTION
     // Only the reflecting side has a reflection (PPR sees no reflector from behind).
-    if (d.reflectorId != 0u && dot(reflectors[d.reflectorId - 1u].normal, v) > 0.0) {
-        GlassRegionData r = regions[d.reflectorId - 1u];
+    if (reflectorId != 0u && dot(reflectors[reflectorId - 1u].normal, v) > 0.0) {
+        GlassRegionData r = regions[reflectorId - 1u];
         if (r.valid != 0u) {
             vec2 t = glassAtlasFromScreen(r, gl_FragCoord.xy);
             vec4 texel = textureLod(reflectionAtlas, t / vec2(textureSize(reflectionAtlas, 0)), 0.0);

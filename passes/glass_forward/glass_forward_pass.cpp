@@ -15,7 +15,7 @@ GlassForwardPass::GlassForwardPass(const vk::Context& ctx, const gpu::GpuScene& 
     auto build = [&](shader::Spirv frag, bool reflection, const char* name) {
         shader::PipelineLayoutDesc layout;
         layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                               VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
+                               VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
         if (reflection) {
             layout.pushBindings.push_back(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
             layout.pushBindings.push_back(VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
@@ -73,7 +73,8 @@ graph::ImageHandle GlassForwardPass::add(graph::RenderGraph& g, const FrameInput
             push.uniformBuffer(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
                 .storageBuffer(in.scene->drawBuffer())
                 .storageBuffer(in.scene->materialBuffer())
-                .storageBuffer(reflectors);
+                .storageBuffer(reflectors)
+                .storageBuffer(in.drawReflectors);
             if (withReflection)
                 push.storageBuffer(pc.buffer(data.regions)).sampled(pc.view(data.atlas), pc.layout(data.atlas), in.samplers->linearClamp);
             push.push(cmd, pipeline);
