@@ -2,7 +2,6 @@
 
 #include "scene/reflector_fit.hpp"
 
-#include <GLFW/glfw3.h>
 #include <imgui.h>
 
 #include <glm/gtc/constants.hpp>
@@ -63,29 +62,28 @@ scene::Reflector withNormal(scene::Reflector r, glm::vec3 n) {
 
 void ReflectorEditorUi::report(const std::string& error, const std::string& success) { message_ = error.empty() ? success : error; }
 
-bool ReflectorEditorUi::draw(const EditorView& view, bool mouseFree, bool keyboardFree) {
+bool ReflectorEditorUi::draw(const EditorView& view, bool mouseFree) {
     bool changed = drawWindow();
     changed |= drawHandles(view, mouseFree);
-    if (keyboardFree) changed |= shortcuts();
     return changed;
 }
 
-bool ReflectorEditorUi::shortcuts() {
-    // ImGui 1.86 with the GLFW backend indexes keys by GLFW key codes.
-    const ImGuiIO& io = ImGui::GetIO();
-    bool changed = false;
-    if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Z)) changed |= io.KeyShift ? doc_.redo() : doc_.undo();
-    if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_Y)) changed |= doc_.redo();
-    if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_S)) report(doc_.save(), "saved " + doc_.path());
-    if (io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_D) && doc_.selection()) changed |= doc_.duplicate(*doc_.selection()).has_value();
-    if (ImGui::IsKeyPressed(GLFW_KEY_DELETE) && doc_.selection()) changed |= doc_.remove(*doc_.selection());
-    return changed;
+bool ReflectorEditorUi::shortcut(EditorKey key) {
+    switch (key) {
+    case EditorKey::Undo: return doc_.undo();
+    case EditorKey::Redo: return doc_.redo();
+    case EditorKey::Save: report(doc_.save(), "saved " + doc_.path()); return false;
+    case EditorKey::Duplicate: return doc_.selection() && doc_.duplicate(*doc_.selection()).has_value();
+    case EditorKey::Delete: return doc_.selection() && doc_.remove(*doc_.selection());
+    }
+    return false;
 }
 
 bool ReflectorEditorUi::drawWindow() {
     bool changed = false;
     ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 368, 8), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(360, 520), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);  // the view stays clickable until opened
     if (!ImGui::Begin("Reflectors")) {
         ImGui::End();
         return false;

@@ -18,6 +18,8 @@ namespace ppr::app {
 
 // A click in the view waiting for the G-buffer under it (the pick arrives a frame or two later).
 enum class ViewClick { Select, Snap, AutoFit };
+// Keyboard shortcuts, delivered as key events (a press and release within one frame still counts).
+enum class EditorKey { Undo, Redo, Save, Duplicate, Delete };
 
 struct EditorView {
     glm::mat4 viewProj{1.0f};
@@ -29,9 +31,11 @@ class ReflectorEditorUi {
 public:
     ReflectorEditorUi(ReflectorDocument& document, const scene::Scene& scene) : doc_(document), scene_(scene) {}
 
-    // The window, the outline and the handles; keyboard shortcuts (Ctrl+Z/Y/S/D, Delete) when ImGui
-    // does not want the keyboard. Returns true when the reflector list changed (give it to the renderer).
-    bool draw(const EditorView& view, bool mouseFree, bool keyboardFree);
+    // The window, the outline and the handles. Returns true when the reflector list changed (give it
+    // to the renderer).
+    bool draw(const EditorView& view, bool mouseFree);
+    // Ctrl+Z / Ctrl+Y (Ctrl+Shift+Z) / Ctrl+S / Ctrl+D / Delete; returns true when the list changed.
+    bool shortcut(EditorKey key);
     // A left click in the view (not on a handle): what to do once the pick for `pixel` arrives.
     std::optional<ViewClick> takeClick(glm::ivec2& pixel);
     // The pick for the pending click arrived; returns true when the list changed.
@@ -43,7 +47,6 @@ private:
     bool drawWindow();
     bool drawFields(std::size_t index);
     bool drawHandles(const EditorView& view, bool mouseFree);
-    bool shortcuts();
     void report(const std::string& error, const std::string& success);
 
     ReflectorDocument& doc_;

@@ -81,18 +81,25 @@ struct GlfwSession {
 // Input gathered by GLFW callbacks (installed before ImGui's, which chain to them).
 struct InputEvents {
     float wheel = 0.0f;
+    std::vector<EditorKey> editorKeys;  // editor shortcuts, in order
     int cycleDebug = 0;
     int cycleTechnique = 0;
     bool capture = false;
     bool resized = false;
 };
 
-void onKey(GLFWwindow* w, int key, int, int action, int) {
+void onKey(GLFWwindow* w, int key, int, int action, int mods) {
     auto* in = static_cast<InputEvents*>(glfwGetWindowUserPointer(w));
     if (!in || action != GLFW_PRESS) return;
     if (key == GLFW_KEY_F2) ++in->cycleDebug;
     if (key == GLFW_KEY_F3) ++in->cycleTechnique;
     if (key == GLFW_KEY_F12) in->capture = true;
+    const bool ctrl = (mods & GLFW_MOD_CONTROL) != 0;
+    if (ctrl && key == GLFW_KEY_Z) in->editorKeys.push_back((mods & GLFW_MOD_SHIFT) ? EditorKey::Redo : EditorKey::Undo);
+    if (ctrl && key == GLFW_KEY_Y) in->editorKeys.push_back(EditorKey::Redo);
+    if (ctrl && key == GLFW_KEY_S) in->editorKeys.push_back(EditorKey::Save);
+    if (ctrl && key == GLFW_KEY_D) in->editorKeys.push_back(EditorKey::Duplicate);
+    if (key == GLFW_KEY_DELETE) in->editorKeys.push_back(EditorKey::Delete);
 }
 void onScroll(GLFWwindow* w, double, double dy) {
     if (auto* in = static_cast<InputEvents*>(glfwGetWindowUserPointer(w))) in->wheel += static_cast<float>(dy);
@@ -347,7 +354,11 @@ void Viewer::buildUi() {
     view.eye = camera_.pose.position;
     view.viewProj = scene::projectionMatrix(camera_.pose.fovYDeg, view.size.x / std::max(view.size.y, 1.0f), scene::kNearPlane) *
                     scene::viewMatrix(camera_.pose);
-    if (editor_->draw(view, !imgui_->wantsMouse(), !imgui_->wantsKeyboard())) renderer_->setReflectors(document_->reflectors());
+    bool edited = editor_->draw(view, !imgui_->wantsMouse());
+    for (EditorKey key : input_.editorKeys)
+        if (!imgui_->wantsTextInput()) edited |= editor_->shortcut(key);
+    input_.editorKeys.clear();
+    if (edited) renderer_->setReflectors(document_->reflectors());
     glm::ivec2 pixel;
     if (const std::optional<ViewClick> click = editor_->takeClick(pixel)) {
         pendingClick_ = click;

@@ -10,7 +10,7 @@ struct PickPush {
 };
 struct PickResult {
     vec4 position;     // world space; w = 1 when a surface is there, 0 for sky or off screen
-    vec4 normal;       // world-space shading normal of that surface
+    vec4 normal;       // world-space geometric normal of that surface (from the depths around it)
     uint reflectorId;  // G-buffer reflector id (index + 1), 0 = none
     uint pad0, pad1, pad2;
 };

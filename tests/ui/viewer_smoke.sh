@@ -13,73 +13,14 @@ WORK=${2:?usage: viewer_smoke.sh PPR_BINARY WORK_DIR}
 FRAMES=${PPR_UI_FRAMES:-3000}
 STEP_TIMEOUT=${PPR_UI_TIMEOUT:-90}
 
-fail() { echo "ui.viewer_opens: FAIL: $*" >&2; [ -f "$WORK/viewer.log" ] && sed 's/^/  viewer: /' "$WORK/viewer.log" >&2; exit 1; }
-note() { echo "ui.viewer_opens: $*"; }
-
-for tool in Xvfb xdotool xwd convert compare; do
-    command -v "$tool" >/dev/null 2>&1 || { echo "ui.viewer_opens: FAIL: '$tool' not installed (scripts/install-deps.sh installs it)"; exit 1; }
-done
-[ -x "$PPR" ] || fail "no executable at $PPR"
-
-rm -rf "$WORK"
-mkdir -p "$WORK/out"
-
-XVFB_PID=""
-VIEWER_PID=""
-cleanup() {
-    if [ -n "$VIEWER_PID" ] && kill -0 "$VIEWER_PID" 2>/dev/null; then
-        kill "$VIEWER_PID" 2>/dev/null
-        sleep 1
-        kill -9 "$VIEWER_PID" 2>/dev/null
-    fi
-    if [ -n "$XVFB_PID" ]; then
-        kill "$XVFB_PID" 2>/dev/null
-        wait "$XVFB_PID" 2>/dev/null
-    fi
-}
-trap cleanup EXIT
-
-# A private X server on the first free display number from 90 up (a number another test grabbed
-# in the meantime makes Xvfb exit at once: then try the next one).
-DISP=""
-for n in $(seq 90 160); do
-    [ -e "/tmp/.X$n-lock" ] || [ -e "/tmp/.X11-unix/X$n" ] && continue
-    Xvfb ":$n" -screen 0 1280x800x24 -nolisten tcp >"$WORK/xvfb.log" 2>&1 &
-    XVFB_PID=$!
-    up=""
-    for _ in $(seq 1 200); do  # ready = it answers a client, not merely has its socket
-        kill -0 "$XVFB_PID" 2>/dev/null || break
-        DISPLAY=":$n" xdotool getdisplaygeometry >/dev/null 2>&1 && { up=1; break; }
-        sleep 0.1
-    done
-    if [ -n "$up" ]; then DISP=$n; break; fi
-    kill "$XVFB_PID" 2>/dev/null
-    wait "$XVFB_PID" 2>/dev/null
-    XVFB_PID=""
-done
-[ -n "$DISP" ] || fail "could not start Xvfb on any display :90..:160 ($(tail -1 "$WORK/xvfb.log" 2>/dev/null))"
-export DISPLAY=":$DISP"
-unset WAYLAND_DISPLAY
-# Xvfb has no GPU driver behind it: lavapipe can present to it, a discrete GPU's driver usually cannot.
-export PPR_DEVICE=${PPR_DEVICE:-cpu}
-note "Xvfb on $DISPLAY"
+TEST=ui.viewer_opens
+# shellcheck source=ui_lib.sh
+source "$(dirname "$0")/ui_lib.sh"
 
 PPR_VIEWER_FRAMES=$FRAMES "$PPR" view --size 640x360 --validation --out "$WORK/out" >"$WORK/viewer.log" 2>&1 &
 VIEWER_PID=$!
 
-alive() { kill -0 "$VIEWER_PID" 2>/dev/null; }
-
-# Window geometry → WX WY WW WH.
-WID=""
-for _ in $(seq 1 $((STEP_TIMEOUT * 2))); do
-    alive || fail "viewer exited before its window appeared"
-    WID=$(xdotool search --onlyvisible --name '^ppr' 2>/dev/null | head -1)
-    [ -n "$WID" ] && break
-    sleep 0.5
-done
-[ -n "$WID" ] || fail "no window named 'ppr…' after ${STEP_TIMEOUT}s"
-eval "$(xdotool getwindowgeometry --shell "$WID")"
-WX=$X WY=$Y WW=$WIDTH WH=$HEIGHT
+find_window
 note "window $WID at $WX,$WY size ${WW}x${WH}: $(xdotool getwindowname "$WID")"
 [ "$WW" -eq 640 ] && [ "$WH" -eq 360 ] || fail "window is ${WW}x${WH}, expected 640x360"
 
