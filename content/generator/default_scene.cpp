@@ -1,5 +1,7 @@
 #include "default_scene.hpp"
 
+#include "scene/reflector_fit.hpp"
+
 #include "gltf_writer.hpp"
 #include "mesh_builder.hpp"
 #include "textures.hpp"
@@ -328,10 +330,17 @@ void buildPuddles(Layout& L, const Materials& M) {
         const glm::dvec3 t(s.x, kPuddleY, s.z);
         MeshData m;
         addPuddle(m, glm::vec3(t), glm::vec3(s.tangent), static_cast<float>(s.halfU), static_cast<float>(s.halfV), 48, seed++);
+        // The reflector is the tightest rectangle around the outline, exactly what the editor's
+        // auto-fit finds for this mesh (engine/scene/reflector_fit.hpp), so authoring and auto-fit agree.
+        std::vector<glm::vec3> triangles;
+        for (uint32_t index : m.indices) triangles.push_back(m.positions[index]);
+        const std::optional<ppr::scene::Reflector> fit = ppr::scene::fitReflector(triangles);
+        if (!fit) throw std::logic_error(std::string("puddle ") + s.name + ": outline is not planar");
         ReflectorDesc r;
-        r.normal = {0, 1, 0};
-        r.tangent = s.tangent;
-        r.halfExtents = {s.halfU, s.halfV};
+        r.center = glm::dvec3(fit->center) - t;  // node space
+        r.normal = glm::dvec3(fit->normal);
+        r.tangent = glm::dvec3(fit->tangent);
+        r.halfExtents = glm::dvec2(fit->halfExtents);
         r.reflectance = s.reflectance;
         L.reflective(s.name, L.mesh(toNode(m, t), s.name, M.water), t, r);
     }
