@@ -63,7 +63,7 @@ scene::Reflector withNormal(scene::Reflector r, glm::vec3 n) {
 void ReflectorEditorUi::report(const std::string& error, const std::string& success) { message_ = error.empty() ? success : error; }
 
 bool ReflectorEditorUi::draw(const EditorView& view, bool mouseFree) {
-    bool changed = drawWindow();
+    bool changed = drawWindow(view);
     changed |= drawHandles(view, mouseFree);
     return changed;
 }
@@ -79,7 +79,7 @@ bool ReflectorEditorUi::shortcut(EditorKey key) {
     return false;
 }
 
-bool ReflectorEditorUi::drawWindow() {
+bool ReflectorEditorUi::drawWindow(const EditorView& view) {
     bool changed = false;
     ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 368, 8), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(360, 520), ImGuiCond_FirstUseEver);
@@ -89,6 +89,12 @@ bool ReflectorEditorUi::drawWindow() {
         return false;
     }
     ImGui::Text("%s%s", doc_.path().empty() ? "(no file)" : doc_.path().c_str(), doc_.dirty() ? " *" : "");
+    if (ImGui::Button("Add")) {  // 3 m ahead, facing the camera (Ctrl+click snaps one onto a surface instead)
+        const CreateResult created = doc_.snapCreate(view.eye + 3.0f * view.forward, -view.forward, "reflector");
+        report(created.error, created ? "added " + doc_.at(*created.index).name : "");
+        changed |= bool(created);
+    }
+    ImGui::SameLine();
     ImGui::BeginDisabled(!doc_.canUndo());
     if (ImGui::Button("Undo")) changed |= doc_.undo();
     ImGui::EndDisabled();

@@ -24,7 +24,8 @@ enum class EditorKey { Undo, Redo, Save, Duplicate, Delete };
 struct EditorView {
     glm::mat4 viewProj{1.0f};
     glm::vec3 eye{0.0f};
-    glm::vec2 size{0.0f};  // pixels
+    glm::vec3 forward{0.0f, 0.0f, -1.0f};  // view direction (unit)
+    glm::vec2 size{0.0f};                  // pixels
 };
 
 class ReflectorEditorUi {
@@ -44,7 +45,7 @@ public:
     const std::string& message() const { return message_; }
 
 private:
-    bool drawWindow();
+    bool drawWindow(const EditorView& view);
     bool drawFields(std::size_t index);
     bool drawHandles(const EditorView& view, bool mouseFree);
     void report(const std::string& error, const std::string& success);

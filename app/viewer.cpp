@@ -352,6 +352,7 @@ void Viewer::buildUi() {
     EditorView view;
     view.size = glm::vec2(extent.width, extent.height);
     view.eye = camera_.pose.position;
+    view.forward = scene::viewDirection(camera_.pose.yawDeg, camera_.pose.pitchDeg);
     view.viewProj = scene::projectionMatrix(camera_.pose.fovYDeg, view.size.x / std::max(view.size.y, 1.0f), scene::kNearPlane) *
                     scene::viewMatrix(camera_.pose);
     bool edited = editor_->draw(view, !imgui_->wantsMouse());
