@@ -38,15 +38,23 @@ wait_for() {  # wait_for DESCRIPTION COMMAND...: polls until COMMAND succeeds
     done
     fail "timed out waiting for $what"
 }
+selected() {  # the selection outline (yellow) is on screen
+    xwd -root -silent | convert xwd:- -crop "${WW}x${WH}+${WX}+${WY}" +repage "png:$WORK/view.png" || return 1
+    [ "$(convert "$WORK/view.png" -fill black +opaque 'rgb(255,200,40)' -fill white -opaque 'rgb(255,200,40)' -format '%[fx:mean*w*h]' info:)" != 0 ]
+}
 saved_with() { [ "$(centre "$FILE")" != none ] && [ "$(centre "$FILE")" != "$1" ]; }
 
 start_viewer
 # The floor just below the red ball (puddles camera, 640x360): a patch there reflects the ball.
 PX=$((WX + 440)) PY=$((WY + 212))
 xdotool mousemove --sync "$PX" "$PY"
+sleep 1
+xdotool keydown ctrl
 sleep 0.5
-xdotool keydown ctrl click 1 keyup ctrl
-sleep 2
+xdotool click 1
+sleep 0.5
+xdotool keyup ctrl
+wait_for "the snapped reflector in the view" selected
 xdotool key ctrl+s
 wait_for "the snapped reflector in the saved file" saved_with none
 snapped=$(centre "$FILE")
@@ -55,10 +63,11 @@ note "snapped puddle_1 at $snapped"
 
 # Drag its centre handle (at the click point) 24 px right and 6 px down: it moves along the floor.
 xdotool mousemove --sync "$PX" "$PY" mousedown 1
-sleep 0.5  # the press lands on the handle before the mouse moves
-for step in 1 2 3 4 5 6; do xdotool mousemove --sync $((PX + 4 * step)) $((PY + step)); sleep 0.2; done
+sleep 2  # the press lands on the handle before the mouse moves (frames are slow on a loaded CPU)
+for step in 1 2 3 4 5 6; do xdotool mousemove --sync $((PX + 4 * step)) $((PY + step)); sleep 0.5; done
+sleep 2
 xdotool mouseup 1
-sleep 1
+sleep 2
 xdotool key ctrl+s
 wait_for "the moved reflector in the saved file" saved_with "$snapped"
 moved=$(centre "$FILE")
@@ -73,7 +82,7 @@ cp "$FILE" "$WORK/moved.reflectors.json"
 
 # Undo restores the snapped position.
 xdotool key ctrl+z
-sleep 1
+sleep 2
 xdotool key ctrl+s
 wait_for "the undone move in the saved file" bash -c "[ \"\$(python3 -c \"import json; r=[r for r in json.load(open('$FILE'))['reflectors'] if r['name']=='puddle_1']; print(' '.join('%.3f' % c for c in r[0]['center']))\")\" = '$snapped' ]"
 note "Ctrl+Z restored $snapped"
