@@ -1,5 +1,6 @@
 #include "compare_metrics.hpp"
 
+#include "common/heat_map.h"
 #include "common/reflection.h"
 #include "tonemap/tonemap.h"
 
@@ -47,12 +48,6 @@ uint8_t toByte(float v) { return static_cast<uint8_t>(std::lround(std::clamp(v, 
 void setPixel(util::Rgba8Image& img, size_t i, uint8_t r, uint8_t g, uint8_t b) {
     uint8_t* p = &img.pixels[i * 4];
     p[0] = r, p[1] = g, p[2] = b, p[3] = 255;
-}
-
-// black → red → yellow → white over equal thirds of [0, 1].
-glm::vec3 heatRamp(float t) {
-    t = std::clamp(t, 0.0f, 1.0f) * 3.0f;
-    return {std::clamp(t, 0.0f, 1.0f), std::clamp(t - 1.0f, 0.0f, 1.0f), std::clamp(t - 2.0f, 0.0f, 1.0f)};
 }
 
 }  // namespace
@@ -168,7 +163,7 @@ util::Rgba8Image errorHeatMap(const FloatImage& technique, const FloatImage& ref
         const float refAlpha = alphaAt(reference, i);
         if (refAlpha == gpu::kReflectionHit) {
             const glm::vec3 d = glm::abs(displayAt(technique, i, exposure) - displayAt(reference, i, exposure));
-            const glm::vec3 c = heatRamp(std::max({d.x, d.y, d.z}) / kHeatMapFullScale);
+            const glm::vec3 c = gpu::errorHeatColor(std::max({d.x, d.y, d.z}));
             setPixel(out, i, toByte(c.r), toByte(c.g), toByte(c.b));
         } else if (refAlpha > 0.0f) {  // a reflection the score leaves out (off screen, sky, second bounce)
             setPixel(out, i, kHeatMapOffscreenGrey, kHeatMapOffscreenGrey, kHeatMapOffscreenGrey);

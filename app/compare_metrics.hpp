@@ -5,6 +5,7 @@
 // Both images are the RGBA16F reflection image of passes/common/reflection.h read back to the host:
 // rgb = reflected radiance (linear HDR), a = kReflection* code. Errors are measured in display space
 // (passes/tonemap/tonemap.h, the code the tonemap shader runs), so they match what the user sees.
+#include "common/heat_map.h"
 #include "scene/glass_atlas.hpp"
 #include "util/image_io.hpp"
 
@@ -72,7 +73,7 @@ double compositedPsnrDb(const util::Rgba8Image& technique, const util::Rgba8Imag
 util::Rgba8Image reflectionDisplayImage(const FloatImage& reflection, float exposure);
 
 // Full-scale error of the heat map: e >= this is white.
-constexpr float kHeatMapFullScale = 0.25f;
+constexpr float kHeatMapFullScale = gpu::kErrorHeatFullScale;  // common/heat_map.h
 // Colour of reflector pixels outside the mask (reference alpha kReflectionOffscreen / kReflectionSecondary).
 constexpr uint8_t kHeatMapOffscreenGrey = 64;
 

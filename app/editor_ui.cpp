@@ -164,12 +164,11 @@ bool ReflectorEditorUi::drawFields(std::size_t index) {
     const bool normalChanged = ImGui::DragFloat3("normal", &n.x, 0.01f, -1.0f, 1.0f);
     track(normalChanged);
     if (normalChanged) r = withNormal(r, n);
-    static float rotate = 0.0f;  // degrees dragged since the press: applied as a delta each frame
-    float before = rotate;
-    const bool rotated = ImGui::DragFloat("rotate (deg)", &rotate, 0.5f);
+    const float before = rotateDrag_;
+    const bool rotated = ImGui::DragFloat("rotate (deg)", &rotateDrag_, 0.5f);
     track(rotated);
-    if (rotated) r = rotateAboutNormal(r, glm::radians(rotate - before));
-    if (!ImGui::IsItemActive()) rotate = 0.0f;
+    if (rotated) r = rotateAboutNormal(r, glm::radians(rotateDrag_ - before));
+    if (!ImGui::IsItemActive()) rotateDrag_ = 0.0f;
     track(ImGui::DragFloat2("half extents", &r.halfExtents.x, 0.01f, kMinEditHalfExtent, 100.0f));
     int kind = r.kind == scene::ReflectorKind::Glass ? 1 : 0;
     const char* kinds[] = {"opaque", "glass"};

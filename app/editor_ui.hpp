@@ -59,6 +59,7 @@ private:
     scene::Reflector dragStart_;  // the reflector when the handle was grabbed
     glm::vec3 dragAnchor_{0.0f};  // where the mouse ray met its plane then
     float ringStartAngle_ = 0.0f;
+    float rotateDrag_ = 0.0f;     // degrees the "rotate" field was dragged since the press (applied as deltas)
     char saveAsPath_[512] = {};
 };
 

@@ -50,6 +50,12 @@ glm::mat4 lightViewProjection(const scene::Scene& s, const glm::vec3& lightDir) 
 
 }  // namespace
 
+uint32_t GlassStats::usedHeight() const {
+    uint32_t rows = 0;
+    for (const scene::GlassRegion& r : layout) rows = std::max(rows, static_cast<uint32_t>(r.atlasOrigin.y + r.atlasSize.y));
+    return rows;
+}
+
 std::string GlassStats::overflowMessage() const {
     if (!overflowed()) return {};
     char scaleText[32];
@@ -258,27 +264,24 @@ uint32_t Renderer::pprResolveFlags() const {
 
 uint32_t Renderer::prepareGlass(uint32_t slot, const FrameRequest& req) {
     glassStats_[slot].reset();
-    glassUsedHeight_ = 0;
     scene::GlassAtlasLayout layout;
-    uint32_t atlasSize = 1;  // bound but unused without glass
-    if (settings_.get("glass") == "1" && !glassIndices_.empty()) {
-        atlasSize = static_cast<uint32_t>(settings_.number("glass_atlas"));
+    const bool glass = settings_.get("glass") == "1" && !glassIndices_.empty();
+    const uint32_t setting = static_cast<uint32_t>(settings_.number("glass_atlas"));
+    if (glass)
         layout = scene::packGlassAtlas(reflectorList_, glassIndices_, frameViewProj_, req.camera.position, scene::kNearPlane,
-                                       {req.extent.width, req.extent.height}, atlasSize);
+                                       {req.extent.width, req.extent.height}, setting);
+    glassRegions_.fill(layout);
+    const uint32_t atlasSize = layout.regions.empty() ? 1u : setting;  // bound but unused without a region
+    if (glass) {
         GlassStats stats;
-        stats.atlasSize = atlasSize;
+        stats.atlasSize = setting;
         stats.visible = layout.visible;
-        stats.regions = static_cast<uint32_t>(layout.regions.size());
         stats.scaled = layout.scaled;
         stats.dropped = layout.dropped;
         stats.scale = layout.scale;
-        stats.layout = layout.regions;
+        stats.layout = std::move(layout.regions);
         glassStats_[slot] = std::move(stats);
-        for (const scene::GlassRegion& r : layout.regions)
-            glassUsedHeight_ = std::max(glassUsedHeight_, static_cast<uint32_t>(r.atlasOrigin.y + r.atlasSize.y));
-        if (layout.regions.empty()) atlasSize = 1;
     }
-    glassRegions_.fill(layout);
     return atlasSize;
 }
 
@@ -343,15 +346,15 @@ std::optional<graph::ImageHandle> Renderer::addReflection(graph::RenderGraph& g,
         addGlassAtlas(g, slot, req, project);
         const passes::PprProjectOutputs scatter = pprProject_->add(g, in, binding, project);
         statsWritten_[slot] = true;
-        if (glassStats_[slot] && glassStats_[slot]->regions > 0) {
+        if (glassStats_[slot] && glassStats_[slot]->regions() > 0) {
             passes::GlassReflectInputs glass;
             glass.atlas = scatter.glassAtlas;
             glass.sceneColor = lit;
             glass.regions = glassRegionBuffers_.table;
             glass.regionList = glassRegionBuffers_.list;
-            glass.regionCount = glassStats_[slot]->regions;
+            glass.regionCount = glassStats_[slot]->regions();
             glass.atlasSize = glassStats_[slot]->atlasSize;
-            glass.usedHeight = glassUsedHeight_;
+            glass.usedHeight = glassStats_[slot]->usedHeight();
             glass.flags = pprResolveFlags();
             glassReflection_ = passes::GlassReflection{glassReflect_->add(g, in, glass), glassRegionBuffers_.table};
         }
@@ -393,15 +396,15 @@ std::optional<graph::ImageHandle> Renderer::addReflection(graph::RenderGraph& g,
     if (technique == "floor") return floor_->add(g, in, gb.depth, lit);
     if (technique == "planar") {
         prepareGlass(slot, req);
-        if (!glassStats_[slot] || glassStats_[slot]->regions == 0)
+        if (!glassStats_[slot] || glassStats_[slot]->regions() == 0)
             return planar_->add(g, in, gb, shadowMap, views.planar, reflectorBuffer_->reflectors(slot));
         glassRegionBuffers_ = glassRegions_.add(g);
         passes::PlanarGlass glass;
         glass.regions = glassRegionBuffers_.table;
         glass.regionList = glassRegionBuffers_.list;
-        glass.regionCount = glassStats_[slot]->regions;
+        glass.regionCount = glassStats_[slot]->regions();
         glass.atlasSize = glassStats_[slot]->atlasSize;
-        glass.usedHeight = glassUsedHeight_;
+        glass.usedHeight = glassStats_[slot]->usedHeight();
         glassPlaneGroups_.assign(reflectorBuffer_->groups().planeGroupCount, false);
         for (const scene::GlassRegion& r : glassStats_[slot]->layout) glassPlaneGroups_[reflectorBuffer_->groups().planeGroup[r.reflectorIndex]] = true;
         glass.planeGroups = &glassPlaneGroups_;

@@ -81,11 +81,12 @@ struct FrameRecord {
 struct GlassStats {
     uint32_t atlasSize = 0;  // texels per side (--set glass_atlas)
     uint32_t visible = 0;    // glass panels on screen
-    uint32_t regions = 0;    // of those, with a region in the atlas
     uint32_t scaled = 0;     // regions scaled down to fit (overflow)
     uint32_t dropped = 0;    // panels without a region (overflow: the farthest first)
     float scale = 1.0f;      // the common scale of the regions
     std::vector<scene::GlassRegion> layout;  // where each panel's region lies (screen and atlas)
+    uint32_t regions() const { return static_cast<uint32_t>(layout.size()); }  // panels with a region
+    uint32_t usedHeight() const;  // atlas rows holding regions (the rest is not dispatched)
     bool overflowed() const { return scaled > 0 || dropped > 0; }
     // One line saying how the atlas overflowed ("" when it did not).
     std::string overflowMessage() const;
@@ -172,7 +173,6 @@ private:
     std::optional<passes::GlassReflection> glassReflection_;  // this frame's, when PPR resolved one
     std::optional<GlassStats> glassStats_[kFramesInFlight];
     glm::mat4 frameViewProj_{1.0f};                           // the main view's, of the frame being recorded
-    uint32_t glassUsedHeight_ = 0;                            // atlas rows holding this frame's regions
     std::vector<bool> glassPlaneGroups_;                      // plane groups holding a pane with a region (planar)
     std::vector<uint32_t> glassOrder_;  // this frame's transparent draws, back to front (reused)
     vk::Buffer stats_[kFramesInFlight];  // PprFrameStats, host-read after the slot's fence

@@ -61,7 +61,7 @@ nlohmann::json makeReport(const vk::Context& ctx, const ReportInfo& info, const 
     j["ppr"] = pprStatsJson(r, info.size, info.reflectorsProjected);
     j["glass"] = nullptr;
     if (r.glass)
-        j["glass"] = {{"atlas_size", r.glass->atlasSize}, {"panels_visible", r.glass->visible}, {"regions", r.glass->regions},
+        j["glass"] = {{"atlas_size", r.glass->atlasSize}, {"panels_visible", r.glass->visible}, {"regions", r.glass->regions()},
                       {"regions_scaled", r.glass->scaled}, {"panels_dropped", r.glass->dropped}, {"scale", r.glass->scale},
                       {"overflow", r.glass->overflowed()}};
     j["warnings"] = r.warning.empty() ? nlohmann::json::array() : nlohmann::json::array({r.warning});

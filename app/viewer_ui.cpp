@@ -304,7 +304,7 @@ PanelActions drawPanel(PanelModel& m) {
         }
         if (m.technique == "ppr" && m.glassStats) {
             const GlassStats& g = *m.glassStats;
-            ImGui::Text("glass atlas %ux%u: %u of %u panels, scale %.2f", g.atlasSize, g.atlasSize, g.regions, g.visible, g.scale);
+            ImGui::Text("glass atlas %ux%u: %u of %u panels, scale %.2f", g.atlasSize, g.atlasSize, g.regions(), g.visible, g.scale);
             if (g.overflowed()) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.2f, 1.0f), "%s", g.overflowMessage().c_str());
         }
     }

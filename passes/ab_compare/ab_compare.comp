@@ -3,23 +3,19 @@
 #include "common/bindings.glsl"
 #include "common/reflection.h"
 #include "ab_compare/ab_compare.h"
+#include "common/heat_map.h"
 #include "tonemap/tonemap.h"
 
 // A/B against the planar ground truth. Split: one reflection image, the technique's on the left of
 // the split line and the reference's on the right (a 1-px white line between), composited as usual.
 // Heat: over the composited frame, the display-space error of the technique's reflection on the
-// pixels the reference scores (black → red → yellow → white at kAbHeatFullScale, as `ppr compare`),
+// pixels the reference scores (common/heat_map.h, as `ppr compare`),
 // grey on reflector pixels it does not score, the frame dimmed elsewhere.
 layout(local_size_x = 16, local_size_y = 16) in;
 layout(set = 0, binding = 1) uniform sampler2D techniqueTex;
 layout(set = 0, binding = 2) uniform sampler2D referenceTex;
 layout(set = 0, binding = 3, rgba16f) uniform image2D target;  // split: the merged reflection; heat: the HDR frame
 layout(push_constant, scalar) uniform Push { AbComparePush pc; };
-
-vec3 heat(float e) {
-    float t = clamp(e / kAbHeatFullScale, 0.0, 1.0) * 3.0;
-    return t < 1.0 ? vec3(t, 0.0, 0.0) : (t < 2.0 ? vec3(1.0, t - 1.0, 0.0) : vec3(1.0, 1.0, t - 2.0));
-}
 
 void main() {
     ivec2 pix = ivec2(gl_GlobalInvocationID.xy);
@@ -35,7 +31,7 @@ void main() {
     vec3 display;
     if (b.a == kReflectionHit) {
         vec3 d = abs(displayFromRadiance(a.rgb, exposure) - displayFromRadiance(b.rgb, exposure));
-        display = heat(max(d.r, max(d.g, d.b)));
+        display = errorHeatColor(max(d.r, max(d.g, d.b)));
     } else if (b.a > 0.0) {
         display = vec3(0.25);
     } else {

@@ -5,8 +5,6 @@
 
 PPR_CONST(uint, kAbSplit, 0u)  // reflection: the technique's left of splitX, the reference's right of it
 PPR_CONST(uint, kAbHeat, 1u)   // over the frame: the reflection error on the reference's scored pixels
-// Error heat map scale: the same as `ppr compare`'s (app/compare_metrics.hpp kHeatMapFullScale).
-PPR_CONST(float, kAbHeatFullScale, 0.25f)
 
 PPR_BEGIN
 struct AbComparePush {

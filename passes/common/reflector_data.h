@@ -24,6 +24,14 @@ struct ReflectorData {
 PPR_END
 PPR_SIZE_CHECK(ReflectorData, 80);
 
+PPR_BEGIN
+// Does p (on or near the reflector's plane) project inside its rectangle?
+PPR_INLINE bool reflectorContains(ReflectorData r, vec3 p) {
+    vec3 l = p - r.center;
+    return abs(dot(l, r.tangent)) <= r.halfExtentU && abs(dot(l, r.bitangent)) <= r.halfExtentV;
+}
+PPR_END
+
 PPR_CONST(uint, kReflectorOpaque, 0u)
 PPR_CONST(uint, kReflectorGlass, 1u)
 

@@ -59,9 +59,7 @@ void main() {
         float tolerance = kLooseSurfaceTolerance + kLooseSurfaceTolerancePerMetre * distance(p, frame.cameraPos.xyz);
         for (uint k = 0u; k < pc.looseCount && id == 0u; ++k) {
             ReflectorData r = reflectors[looseReflectors[k]];
-            vec3 l = p - r.center;
-            if (abs(dot(l, r.normal)) <= tolerance && abs(dot(l, r.tangent)) <= r.halfExtentU && abs(dot(l, r.bitangent)) <= r.halfExtentV)
-                id = looseReflectors[k] + 1u;
+            if (abs(dot(p - r.center, r.normal)) <= tolerance && reflectorContains(r, p)) id = looseReflectors[k] + 1u;
         }
     }
     outReflector = id;

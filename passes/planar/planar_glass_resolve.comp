@@ -36,8 +36,7 @@ bool panelShown(ReflectorData r, vec2 q) {
     if (denom >= 0.0) return false;
     float t = dot(r.center - eye, r.normal) / denom;
     vec3 hit = eye + dir * t;
-    vec3 l = hit - r.center;
-    if (abs(dot(l, r.tangent)) > r.halfExtentU || abs(dot(l, r.bitangent)) > r.halfExtentV) return false;
+    if (!reflectorContains(r, hit)) return false;
     float depth = texelFetch(mainDepth, ivec2(q), 0).r;
     if (depth <= 0.0) return true;  // sky behind the glass
     return distance(hit, eye) < distance(worldFromDepth(q * frame.invScreenSize, depth), eye);

@@ -51,11 +51,6 @@ uint unpack16(uint word, uint slot) { return (word >> (16u * (slot & 1u))) & 0xF
 uint survivorAt(uint k) { return pc.cullTiles == 0u ? projectionOrder[k] : unpack16(survivorWords[k >> 1u], k); }
 uint occluderAt(uint k) { return pc.cullTiles == 0u ? k : unpack16(occluderWords[k >> 1u], k); }
 
-bool insideRectangle(ReflectorData r, vec3 p) {
-    vec3 l = p - r.center;
-    return abs(dot(l, r.tangent)) <= r.halfExtentU && abs(dot(l, r.bitangent)) <= r.halfExtentV;
-}
-
 // Occluding shapes: does the segment eye → hit cross another reflector's rectangle first? Coplanar
 // neighbours meet the segment at its end and do not count. Only a reflector whose screen rectangle
 // holds the written pixel can cross that segment (it projects to that one point), so the tile's
@@ -70,7 +65,7 @@ bool occludedByOtherReflector(vec3 eye, vec3 hit, uint self, uint candidates) {
         float denom = dot(d, o.normal);
         if (abs(denom) < 1e-8) continue;
         float t = dot(o.center - eye, o.normal) / denom;
-        if (t > 1e-4 && t < 1.0 - 1e-4 && insideRectangle(o, eye + d * t)) return true;
+        if (t > 1e-4 && t < 1.0 - 1e-4 && reflectorContains(o, eye + d * t)) return true;
     }
     return false;
 }
@@ -251,7 +246,7 @@ void main() {
         vec3 mirrored = p - 2.0 * d * r.normal;
         // Ray from the camera to the mirrored point crosses the plane at eyeHeight / (eyeHeight + d).
         vec3 hit = mix(eye, mirrored, eyeHeight / (eyeHeight + d));
-        if (!insideRectangle(r, hit)) continue;
+        if (!reflectorContains(r, hit)) continue;
         best = i;
         bestDistance = d;
         bestMirrored = mirrored;

@@ -123,11 +123,11 @@ TEST(Glass, AnOverflowingAtlasDegradesPredictablyAndReportsIt) {
         const app::CaptureResult ppr = render(f, "ppr", pose);
         ASSERT_TRUE(ppr.glass) << atlas;
         const app::GlassStats& g = *ppr.glass;
-        std::printf("atlas %u: %u visible, %u regions, %u scaled to %.3f, %u dropped\n", g.atlasSize, g.visible, g.regions, g.scaled,
+        std::printf("atlas %u: %u visible, %u regions, %u scaled to %.3f, %u dropped\n", g.atlasSize, g.visible, g.regions(), g.scaled,
                     g.scale, g.dropped);
         EXPECT_TRUE(g.overflowed()) << atlas;
-        EXPECT_EQ(g.regions + g.dropped, g.visible) << atlas;
-        EXPECT_EQ(g.scaled, g.regions) << atlas << ": one common scale";
+        EXPECT_EQ(g.regions() + g.dropped, g.visible) << atlas;
+        EXPECT_EQ(g.scaled, g.regions()) << atlas << ": one common scale";
         if (std::string(atlas) == "256") EXPECT_EQ(g.dropped, 0u);
         else EXPECT_GT(g.dropped, 0u);
         const std::string side = std::string(atlas) + "x" + atlas;
