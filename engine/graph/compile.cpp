@@ -2,6 +2,7 @@
 // Passes keep their declaration order: a handle can only be read after the write that produced it,
 // so declaration order is already a valid topological order and no sort is needed.
 #include "graph/graph.hpp"
+#include "graph/history.hpp"
 
 #include <set>
 #include <stdexcept>
@@ -37,6 +38,8 @@ void RenderGraph::cull() {
         bool keep = pass.sideEffect;
         for (const ResourceUse& u : pass.uses) {
             if (u.versionWritten == 0) continue;
+            // A write to an import is observed outside this frame (swapchain, read-back, and a history
+            // `current`, read as `previous` next frame), so it counts as a side effect.
             if (isImported(u.resource) || needed.count(key(u.resource, u.versionWritten))) keep = true;
         }
         compiled_[i].culled = !keep;
@@ -65,6 +68,23 @@ void RenderGraph::deriveUsage() {
                 r.bufferUsage |= bufferUsageFor(u.access);
         }
     }
+}
+
+void RenderGraph::commitImportStates() {
+    if (!compiled) throw std::runtime_error("graph: commitImportStates() before compile()");
+    for (uint32_t id = 0; id < resources_.size(); ++id) {
+        const Resource& r = resources_[id];
+        if (r.importedImage) r.importedImage->state = endStates_[id];
+        // Buffers have no layout; keeping UNDEFINED there keeps state comparisons simple.
+        if (r.importedBuffer) r.importedBuffer->state = {VK_IMAGE_LAYOUT_UNDEFINED, endStates_[id].stage, endStates_[id].access};
+    }
+    // Only a kept pass's write makes `current` worth reading next frame.
+    for (const HistoryUse& h : histories_)
+        for (const CompiledPass& cp : compiled_) {
+            if (cp.culled) continue;
+            for (const ResourceUse& u : passes_[cp.index].uses)
+                if (u.resource == h.current && u.versionWritten > 0) h.store->markWritten(h.name);
+        }
 }
 
 std::vector<std::string> RenderGraph::culledPasses() const {

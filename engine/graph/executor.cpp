@@ -48,7 +48,10 @@ void beginRendering(VkCommandBuffer cmd, VkExtent2D extent, const std::vector<Vk
 }  // namespace
 
 GraphExecutor::GraphExecutor(const vk::Context& ctx, uint32_t framesInFlight, uint32_t maxPassesPerFrame)
-    : ctx_(ctx), framesInFlight_(framesInFlight), maxPasses_(maxPassesPerFrame) {
+    : ctx_(ctx),
+      history_(std::make_unique<HistoryStore>(vkHistoryAllocator(ctx))),
+      framesInFlight_(framesInFlight),
+      maxPasses_(maxPassesPerFrame) {
     if (framesInFlight == 0 || maxPassesPerFrame == 0)
         throw std::runtime_error("graph: GraphExecutor needs framesInFlight > 0 and maxPassesPerFrame > 0");
     timingSlots_.resize(framesInFlight);
@@ -60,6 +63,7 @@ GraphExecutor::GraphExecutor(const vk::Context& ctx, uint32_t framesInFlight, ui
 }
 
 GraphExecutor::~GraphExecutor() {
+    history_.reset();  // first, while ctx_ is certainly alive; its deallocator waits for the device
     for (PooledImage& p : images_) vk::destroyImage(ctx_, p.object);
     for (PooledBuffer& p : buffers_) vk::destroyBuffer(ctx_, p.object);
     if (queryPool_) vkDestroyQueryPool(ctx_.device(), queryPool_, nullptr);
@@ -195,13 +199,10 @@ void GraphExecutor::execute(RenderGraph& graph, VkCommandBuffer cmd, uint32_t fr
     else slot.passNames.clear();
 
     recordBarriers(graph.finalBarriers_);
-    // Imports leave the frame in the state the recorded commands put them in.
-    for (uint32_t id = 0; id < graph.resources_.size(); ++id) {
-        const RenderGraph::Resource& r = graph.resources_[id];
-        if (r.importedImage) r.importedImage->state = graph.endStates_[id];
-        if (r.importedBuffer) r.importedBuffer->state = {VK_IMAGE_LAYOUT_UNDEFINED, graph.endStates_[id].stage,
-                                                         graph.endStates_[id].access};
-    }
+    // Imports leave the frame in the state the recorded commands put them in; one execute() is one
+    // frame (slots, timings and trimPool count it so too), so it also ends the history store's frame.
+    graph.commitImportStates();
+    history_->endFrame();
 }
 
 std::vector<PassTiming> GraphExecutor::readTimings(uint32_t frameSlot) {

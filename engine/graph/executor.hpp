@@ -4,9 +4,11 @@
 // vkCmdPipelineBarrier2 per pass), begins dynamic rendering for graphics passes, and wraps every pass
 // in a debug label and a pair of GPU timestamps.
 #include "graph/graph.hpp"
+#include "graph/history.hpp"
 #include "vk/context.hpp"
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -26,8 +28,14 @@ public:
     GraphExecutor& operator=(const GraphExecutor&) = delete;
 
     // Records the compiled graph into cmd for frame slot `frameSlot` (< framesInFlight). The caller
-    // submits cmd; imported resources' states are updated as if the commands had executed.
+    // submits cmd; imported resources' states are updated as if the commands had executed, and
+    // history().endFrame() is called (one execute() per frame).
     void execute(RenderGraph& graph, VkCommandBuffer cmd, uint32_t frameSlot);
+
+    // Resources that live from one frame to the next (TAA...), backed by VMA and destroyed with the
+    // executor: `graph.history(executor.history(), "taa.color", desc)`. Never pooled with transients.
+    HistoryStore& history() { return *history_; }
+    const HistoryStore& history() const { return *history_; }
 
     // After the fence of the frame recorded in `frameSlot` has signalled: that frame's per-pass GPU
     // times, in execution order. Empty if nothing was recorded in that slot yet.
@@ -60,6 +68,7 @@ private:
     };
 
     const vk::Context& ctx_;
+    std::unique_ptr<HistoryStore> history_;
     VkQueryPool queryPool_ = VK_NULL_HANDLE;
     uint32_t framesInFlight_;
     uint32_t maxPasses_;

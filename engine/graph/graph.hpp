@@ -102,6 +102,20 @@ struct ResourceUse {
 
 class PassContext;
 class RenderGraph;
+class HistoryStore;
+
+// One frame's view of a history entry (history.hpp): read `previous` (last frame's contents, only
+// meaningful when previousValid), write `current` (becomes `previous` next frame).
+struct HistoryImage {
+    ImageHandle previous;
+    ImageHandle current;
+    bool previousValid = false;  // false on the first frame after creation or a reset
+};
+struct HistoryBuffer {
+    BufferHandle previous;
+    BufferHandle current;
+    bool previousValid = false;
+};
 
 class PassBuilder {
 public:
@@ -178,6 +192,11 @@ public:
     // Imported resources: the pointee must outlive execution; the graph updates its state.
     ImageHandle importImage(std::string name, ExternalImage* image);
     BufferHandle importBuffer(std::string name, ExternalBuffer* buffer);
+    // History resources (history.hpp): the store's ping-pong pair for `name`, imported as
+    // "<name>[previous]" and "<name>[current]". A changed descriptor reallocates and resets the entry.
+    // Like imports, the store must outlive this graph's execution.
+    HistoryImage history(HistoryStore& store, const std::string& name, const ImageDesc& desc);
+    HistoryBuffer history(HistoryStore& store, const std::string& name, const BufferDesc& desc);
 
     template <class Data>
     const Data& addPass(std::string name, QueueKind kind, const std::function<void(PassBuilder&, Data&)>& setup,
@@ -202,6 +221,11 @@ public:
     std::vector<std::string> culledPasses() const;
     std::string cullLog() const;  // "graph: culled pass 'x' (nothing reads: a, b)" lines, empty if none
     std::string toDot() const;    // Graphviz of passes and resource versions (culled passes dashed)
+
+    // After the frame's commands are recorded: writes each import's end state back into its
+    // ExternalImage/ExternalBuffer and tells history stores which `current` a kept pass wrote.
+    // GraphExecutor::execute calls it; GPU-free so tests can simulate frames with it.
+    void commitImportStates();
 
     // Resource introspection.
     uint32_t resourceCount() const { return static_cast<uint32_t>(resources_.size()); }
@@ -274,6 +298,12 @@ private:
     std::vector<CompiledPass> compiled_;
     std::vector<PlannedBarrier> finalBarriers_;
     std::vector<ResourceState> endStates_;  // per resource after the frame; the executor writes it to imports
+    struct HistoryUse {
+        HistoryStore* store;
+        std::string name;
+        uint32_t current;  // resource id of the entry's `current` import
+    };
+    std::vector<HistoryUse> histories_;
     bool compiled = false;
 };
 
