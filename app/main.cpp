@@ -1,9 +1,9 @@
 // ppr: pixel-projected reflections sample. See README.md and `ppr --help`.
-#include "bench.hpp"
-#include "capture.hpp"
-#include "compare.hpp"
-#include "cli.hpp"
-#include "viewer.hpp"
+#include "bench/bench.hpp"
+#include "capture/capture.hpp"
+#include "cli/cli.hpp"
+#include "compare/compare.hpp"
+#include "viewer/viewer.hpp"
 
 #include <cstdio>
 #include <cstdlib>

@@ -1,12 +1,12 @@
-#include "bench.hpp"
+#include "bench/bench.hpp"
 
-#include "bench_report.hpp"
-#include "compare_metrics.hpp"
-#include "headless.hpp"
-#include "report.hpp"
+#include "bench/bench_report.hpp"
+#include "capture/report.hpp"
+#include "cli/scene_source.hpp"
+#include "compare/compare_metrics.hpp"
+#include "render/headless.hpp"
 #include "scene/stress_scene.hpp"
-#include "scene_source.hpp"
-#include "techniques.hpp"
+#include "techniques/technique_table.hpp"
 
 #include <unistd.h>
 
@@ -51,8 +51,8 @@ private:
 struct Rig {
     Rig(const vk::Context& ctx, scene::Scene s, const Options& o) : scene(std::move(s)) {
         renderer = std::make_unique<Renderer>(ctx, scene);
-        for (const std::string& kv : o.sets) renderer->settings().apply(kv);
         headless = std::make_unique<HeadlessRenderer>(ctx, *renderer);
+        for (const std::string& kv : o.sets) headless->settings().apply(kv);
     }
     scene::CameraPose camera(const std::string& name) const {
         return resolveCameras(scene, name).front().pose;  // throws naming the camera when missing
@@ -76,6 +76,7 @@ double passOr0(const std::map<std::string, double>& m, const std::string& name) 
 class Bench {
 public:
     explicit Bench(const Options& o) : o_(o), extent_{o.width, o.height}, frames_(o.frames ? o.frames : 10) {
+        for (const std::string& kv : o.sets) settings_.apply(kv);
         vk::ContextOptions co;
         co.validation = o.validation;
         ctx_ = vk::Context::create(co);
@@ -136,11 +137,11 @@ private:
         results_.techniquesCamera = cam.name;
         std::vector<std::string> list = techniqueList();
         if (!hasPlanar()) list.insert(list.begin(), "planar");  // the reference, not listed
-        const float exposure = static_cast<float>(rig.renderer->settings().number("exposure"));
+        const float exposure = rig.headless->settings().values().view.exposure;
         std::map<std::string, Measured> measured;
         for (const std::string& t : list) {
             progress_->step("technique " + t + " on " + cam.name);
-            rig.renderer->setTechnique(t);
+            rig.headless->setTechnique(t);
             measured[t] = measure(rig, cam.pose, true);
         }
         const Measured& reference = measured.at("planar");
@@ -151,7 +152,9 @@ private:
             row.passMs = m.passMs;
             row.passOrder = m.last.passOrder;
             row.frameMs = m.frameMs;
-            row.techniqueMs = techniqueSum(t, m.passMs);
+            row.techniqueMs = techniqueCost(t, m.passMs);
+            for (const auto& [pass, ms] : m.passMs)
+                if (isTechniquePass(t, pass)) row.costPasses.insert(pass);
             if (t != "planar") {
                 FloatImage reflection = m.last.reflection;
                 if (reflection.rgba.empty()) {  // no reflection image (none): no reflection anywhere
@@ -173,18 +176,18 @@ private:
         results_.reflectorsCamera = "overview";
         for (uint32_t n : kSweepReflectorCounts) {
             Rig rig(*ctx_, scene::makeStressScene(n), o_);
-            rig.renderer->setTechnique("ppr");
+            rig.headless->setTechnique("ppr");
             const scene::CameraPose camera = rig.camera("overview");
             for (bool tiles : {true, false}) {
                 progress_->step("reflectors N=" + std::to_string(n) + " tiles=" + (tiles ? "1" : "0"));
-                rig.renderer->settings().set("tiles", tiles ? "1" : "0");
+                rig.headless->settings().set("tiles", tiles ? "1" : "0");
                 const Measured m = measure(rig, camera, false);
                 BenchReflectorRow row;
                 row.reflectors = n;
                 row.tiles = tiles;
                 row.projectMs = passOr0(m.passMs, "ppr.project");
                 row.boundsMs = passOr0(m.passMs, "ppr.bounds");
-                row.techniqueMs = techniqueSum("ppr", m.passMs);
+                row.techniqueMs = techniqueCost("ppr", m.passMs);
                 if (m.last.pprStats) {
                     row.pairs = m.last.pprStats->reflectorTilePairs;
                     row.pairsUnculled = uint64_t(m.last.pprStats->tilesWithContent) * std::min(n, gpu::kPprMaxReflectors);
@@ -197,13 +200,13 @@ private:
     void runCoverage() {
         results_.coverageScene = "stress:" + std::to_string(kCoverageSceneTiles);
         Rig rig(*ctx_, scene::makeStressScene(kCoverageSceneTiles), o_);
-        rig.renderer->setTechnique("ppr");
+        rig.headless->setTechnique("ppr");
         const uint32_t tiles = gpu::pprTilesCovering(extent_.width) * gpu::pprTilesCovering(extent_.height);
         for (const char* name : kCoverageCameras) {
             const scene::CameraPose camera = rig.camera(name);
             for (bool indirect : {true, false}) {
                 progress_->step(std::string("coverage ") + name + " indirect=" + (indirect ? "1" : "0"));
-                rig.renderer->settings().set("indirect", indirect ? "1" : "0");
+                rig.headless->settings().set("indirect", indirect ? "1" : "0");
                 const Measured m = measure(rig, camera, false);
                 BenchCoverageRow row;
                 row.camera = name;
@@ -242,6 +245,7 @@ private:
                            {"command", commandLine()},
                            {"environment",
                             {{"LP_NUM_THREADS", threads ? threads : ""}, {"MESA_SHADER_CACHE_DISABLE", cache ? cache : ""}}},
+                           {"settings", settings_.all()},
                            {"validation_errors", ctx_->validationErrors()}};
         const std::filesystem::path out(o_.out);
         std::filesystem::create_directories(out);
@@ -262,6 +266,7 @@ private:
     std::unique_ptr<vk::Context> ctx_;
     std::unique_ptr<Progress> progress_;
     std::set<std::string> warned_;
+    Settings settings_;  // the --set values every rig starts from (bench.json "settings")
     BenchResults results_;
 };
 

@@ -1,5 +1,5 @@
 #pragma once
-#include "cli.hpp"
+#include "cli/cli.hpp"
 
 namespace ppr::app {
 // `ppr bench`: GPU timings in one process, warm-up then the median of --frames frames per

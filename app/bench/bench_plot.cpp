@@ -1,6 +1,6 @@
-#include "bench_plot.hpp"
+#include "bench/bench_plot.hpp"
 
-#include "contact_sheet.hpp"  // drawText, textWidth
+#include "compare/contact_sheet.hpp"  // drawText, textWidth
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,6 @@
-#include "bench_report.hpp"
+#include "bench/bench_report.hpp"
 
-#include "bench_plot.hpp"
-#include "techniques.hpp"
+#include "bench/bench_plot.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -156,7 +155,7 @@ std::string passesTable(const BenchResults& r) {
         for (const BenchTechnique& t : r.techniques) {
             const auto it = t.passMs.find(pass);
             const std::string ms = it == t.passMs.end() ? "" : fixed(it->second, 3);
-            md += " " + (!ms.empty() && isTechniquePass(t.name, pass) ? "**" + ms + "**" : ms) + " |";
+            md += " " + (!ms.empty() && t.costPasses.count(pass) ? "**" + ms + "**" : ms) + " |";
         }
         md += "\n";
     }
@@ -179,10 +178,6 @@ std::string slidesTable(const BenchResults& r) {
 }
 
 }  // namespace
-
-double techniqueSum(const std::string& technique, const std::map<std::string, double>& passMs) {
-    return sumPasses(passMs, [&](const std::string& pass) { return isTechniquePass(technique, pass); });
-}
 
 std::optional<double> hizBuildMs(const BenchTechnique& t) {
     auto isHiz = [](const std::string& pass) { return pass.rfind("hiz.", 0) == 0; };

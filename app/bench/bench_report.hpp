@@ -7,6 +7,7 @@
 
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -14,7 +15,8 @@ namespace ppr::app {
 
 struct BenchTechnique {
     std::string name;
-    double techniqueMs = 0.0;  // the technique's own passes (techniqueSum)
+    double techniqueMs = 0.0;            // the sum of its costPasses
+    std::set<std::string> costPasses;    // the passes that are its cost (isTechniquePass; bold in bench.md)
     double frameMs = 0.0;      // the whole frame
     std::map<std::string, double> passMs;
     std::vector<std::string> passOrder;  // execution order; empty = passMs' (alphabetical) order
@@ -45,8 +47,6 @@ struct BenchResults {
     std::vector<BenchCoverageRow> coverage;
 };
 
-// A technique's own cost: the passes isTechniquePass counts for it.
-double techniqueSum(const std::string& technique, const std::map<std::string, double>& passMs);
 // The depth hierarchy build alone (hiz.* passes); absent when the technique built none.
 std::optional<double> hizBuildMs(const BenchTechnique& technique);
 // `ms` over the GPU ms of the technique named `reference` (ppr, floor); absent when the reference

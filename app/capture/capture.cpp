@@ -1,7 +1,7 @@
-#include "capture.hpp"
+#include "capture/capture.hpp"
 
-#include "headless_session.hpp"
-#include "report.hpp"
+#include "capture/report.hpp"
+#include "render/headless_session.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -29,7 +29,7 @@ int runCapture(const Options& o) {
         info.technique = o.technique;
         info.reflectors = s.renderer->reflectors().size();
         info.reflectorsProjected = std::min<size_t>(info.reflectors, gpu::kPprMaxReflectors);
-        info.settings = &s.renderer->settings();
+        info.settings = &s.headless->settings();
         info.validationEnabled = s.ctx->validationEnabled();
         info.validationErrors = s.ctx->validationErrors() - errorsBefore;
         info.images = {{"final", "final.png"}};

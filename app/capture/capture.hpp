@@ -1,5 +1,5 @@
 #pragma once
-#include "cli.hpp"
+#include "cli/cli.hpp"
 
 namespace ppr::app {
 // `ppr capture`: renders each requested camera headlessly, writes final.png + report.json.

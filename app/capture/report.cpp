@@ -1,6 +1,6 @@
-#include "report.hpp"
+#include "capture/report.hpp"
 
-#include "techniques.hpp"
+#include "techniques/technique_table.hpp"
 
 #include <fstream>
 #include <stdexcept>
@@ -8,10 +8,7 @@
 namespace ppr::app {
 
 double techniqueMs(const std::string& technique, const CaptureResult& r) {
-    double sum = 0.0;
-    for (const auto& [name, ms] : r.passMedianMs)
-        if (isTechniquePass(technique, name)) sum += ms;
-    return sum;
+    return techniqueCost(technique, r.passMedianMs);
 }
 
 nlohmann::json pprStatsJson(const CaptureResult& r, VkExtent2D size, size_t projected) {
@@ -47,7 +44,7 @@ nlohmann::json makeReport(const vk::Context& ctx, const ReportInfo& info, const 
     j["technique"] = info.technique;
     j["settings"] = nlohmann::json::object();
     if (info.settings)
-        for (const auto& [k, v] : info.settings->all()) j["settings"][k] = v;
+        for (const auto& [k, v] : info.settings->all()) j["settings"][k] = v;  // every declared key
     j["frames"] = r.frames;
     nlohmann::json passes = nlohmann::json::object();
     for (const std::string& name : r.passOrder) passes[name] = {{"gpu_ms", r.passMedianMs.at(name)}};

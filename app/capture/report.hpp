@@ -1,6 +1,6 @@
 #pragma once
 // report.json of `ppr capture` (fields per the DESIGN.md contract).
-#include "headless.hpp"
+#include "render/headless.hpp"
 #include "vk/context.hpp"
 
 #include <nlohmann/json.hpp>
@@ -21,7 +21,7 @@ struct ReportInfo {
     std::map<std::string, std::string> images;  // role → file
 };
 
-// Sum of the median GPU times of the technique's own passes (ppr.* / planar.*).
+// Sum of the median GPU times of the technique's passes (techniques/technique_table.hpp).
 double techniqueMs(const std::string& technique, const CaptureResult& result);
 // The "ppr" block of report.json: tile classification and culling counts (null when PPR did not run).
 nlohmann::json pprStatsJson(const CaptureResult& result, VkExtent2D size, size_t reflectorsProjected);

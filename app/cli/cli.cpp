@@ -1,4 +1,7 @@
-#include "cli.hpp"
+#include "cli/cli.hpp"
+
+#include "ppr_common/encoding.h"
+#include "techniques/technique_table.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -40,11 +43,11 @@ std::string usage() {
            "  --reflectors FILE    reflector JSON (default: <scene>.reflectors.json or glTF node extras)\n"
            "  --camera NAME|x,y,z,yawDeg,pitchDeg[,fovYDeg]\n"
            "                       capture: default = every named camera; view: the first one\n"
-           "  --size WxH           default 1280x720 (16..8192 per side; ppr: at most 4096, its offsets are 12-bit)\n"
-           "  --technique T        ppr (default) | ssr-brute | ssr-lowq | ssr-hiz | ssr-linear | planar (ground truth)\n"
-           "                       | floor (cost floor, draws no reflection) | none; compare and bench: repeatable\n"
-           "  --set key=value      repeatable; keys: debug, exposure, shadowres, holes, filter, antibleed, tiles, indirect,\n"
-           "                       fallback, ssr_distance, ssr_thickness, ssr_thickness_scale, ssr_steps (docs/ssr.md)\n"
+           "  --size WxH           default 1280x720 (16..8192 per side; ppr: at most " + std::to_string(gpu::kPprMaxExtent) +
+           ", its offsets are 12-bit)\n"
+           "  --technique T        compare and bench: repeatable; one of\n" +
+           techniquesUsage() +
+           "  --set key=value      repeatable (docs/settings.md); keys:\n" + settingsUsage() +
            "  --frames N           frames to render (capture default 5: median GPU times over them; bench default 10)\n"
            "  --warmup N           bench: frames rendered before measuring (default 3)\n"
            "  --sweep S            bench, repeatable: techniques | reflectors | coverage (default: all three)\n"
@@ -117,9 +120,9 @@ Options parseCommandLine(int argc, const char* const* argv) {
     if (o.mode == Mode::Compare) usesPpr = listsPpr();
     // bench: the reflector and coverage sweeps always run PPR; the techniques sweep runs all by default.
     if (o.mode == Mode::Bench) usesPpr = o.techniques.empty() || listsPpr() || o.sweeps != std::vector<std::string>{"techniques"};
-    if (usesPpr && std::max(o.width, o.height) > kPprMaxSize)
+    if (usesPpr && std::max(o.width, o.height) > gpu::kPprMaxExtent)
         throw std::runtime_error("--size " + std::to_string(o.width) + "x" + std::to_string(o.height) +
-                                 ": PPR encodes offsets with 12-bit integer parts, so it runs at most " + std::to_string(kPprMaxSize) +
+                                 ": PPR encodes offsets with 12-bit integer parts, so it runs at most " + std::to_string(gpu::kPprMaxExtent) +
                                  " px per side (use --technique planar or none for larger sizes)");
     return o;
 }

@@ -1,9 +1,8 @@
 #pragma once
-// Command line per the DESIGN.md contract:
+// Command line per the DESIGN.md contract (techniques and settings from their tables):
 //   ppr [view|capture|compare|bench] [--scene F] [--reflectors F] [--camera NAME|x,y,z,yaw,pitch[,fov]]
 //       [--size WxH] [--technique T] [--set key=value]... [--frames N] [--out DIR] [--validation]
-#include "settings.hpp"
-#include "techniques.hpp"
+#include "settings/settings.hpp"
 
 #include <optional>
 #include <string>
@@ -38,7 +37,6 @@ const std::vector<std::string>& benchSweepNames();
 
 constexpr uint32_t kMinSize = 16;
 constexpr uint32_t kMaxSize = 8192;
-constexpr uint32_t kPprMaxSize = 4096;  // = gpu::kPprMaxExtent (ppr_common/encoding.h)
 constexpr uint32_t kMaxFrames = 100000;
 
 // Throws std::runtime_error with one line naming the option and the problem.

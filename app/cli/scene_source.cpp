@@ -1,4 +1,4 @@
-#include "scene_source.hpp"
+#include "cli/scene_source.hpp"
 
 #include "scene/stress_scene.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 // Where the scene and cameras come from: --scene / the built-in default scene, --reflectors, --camera.
-#include "cli.hpp"
+#include "cli/cli.hpp"
 #include "scene/scene.hpp"
 
 #include <string>

@@ -1,9 +1,9 @@
-#include "compare.hpp"
+#include "compare/compare.hpp"
 
 #include "common/reflection.h"
-#include "contact_sheet.hpp"
-#include "headless_session.hpp"
-#include "report.hpp"
+#include "capture/report.hpp"
+#include "compare/contact_sheet.hpp"
+#include "render/headless_session.hpp"
 
 #include <cstdio>
 #include <filesystem>
@@ -63,11 +63,10 @@ std::string fixed(double v, int digits) {
 int runCompare(const Options& o) {
     HeadlessSession session(o);
     const vk::Context& ctx = *session.ctx;
-    Renderer& renderer = *session.renderer;
     HeadlessRenderer& headless = *session.headless;
     const VkExtent2D extent = session.extent;
     const uint32_t frames = session.frames;
-    const float exposure = static_cast<float>(renderer.settings().number("exposure"));
+    const float exposure = headless.settings().values().view.exposure;
 
     nlohmann::json summary;
     summary["device"] = ctx.info().name;
@@ -78,7 +77,7 @@ int runCompare(const Options& o) {
         const std::filesystem::path dir = session.cameraDir(cam.name);
         const uint32_t errorsBefore = ctx.validationErrors();
 
-        renderer.setTechnique("planar");
+        headless.setTechnique("planar");
         const CaptureResult ref = headless.capture(cam.pose, extent, frames, false, true);
         util::writePng((dir / "final_planar.png").string(), ref.image);
         util::writePng((dir / "reflection_planar.png").string(), reflectionDisplayImage(ref.reflection, exposure));
@@ -87,7 +86,7 @@ int runCompare(const Options& o) {
         metrics["camera"] = cam.name;
         metrics["size"] = {extent.width, extent.height};
         metrics["device"] = ctx.info().name;
-        metrics["settings"] = renderer.settings().all();
+        metrics["settings"] = headless.settings().all();
         metrics["frames"] = frames;
         metrics["reference"] = {{"technique", "planar"},
                                 {"gpu_ms", techniqueMs("planar", ref)},
@@ -96,7 +95,7 @@ int runCompare(const Options& o) {
         metrics["techniques"] = nlohmann::json::object();
         std::vector<ContactTile> finals, reflections, errors;
         for (const std::string& t : o.techniques) {
-            renderer.setTechnique(t);
+            headless.setTechnique(t);
             const CaptureResult r = headless.capture(cam.pose, extent, frames, false, true);
             if (!r.warning.empty()) std::fprintf(stderr, "ppr: warning: %s\n", r.warning.c_str());
             const FloatImage reflection = r.reflection.rgba.empty() ? emptyReflection(extent) : r.reflection;

@@ -1,5 +1,5 @@
 #pragma once
-#include "cli.hpp"
+#include "cli/cli.hpp"
 
 namespace ppr::app {
 // `ppr compare`: for each camera renders the planar ground truth and every --technique, scores each

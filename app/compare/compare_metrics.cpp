@@ -1,4 +1,4 @@
-#include "compare_metrics.hpp"
+#include "compare/compare_metrics.hpp"
 
 #include "common/heat_map.h"
 #include "common/reflection.h"

@@ -1,4 +1,4 @@
-#include "editor_ui.hpp"
+#include "editor/editor_ui.hpp"
 
 #include "scene/reflector_fit.hpp"
 

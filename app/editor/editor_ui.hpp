@@ -6,7 +6,7 @@
 // surface, Alt: auto-fit the planar region under the cursor). The document model is
 // reflector_editor.hpp; the pick comes from the G-buffer (passes/pick).
 #include "pick/pick.h"
-#include "reflector_editor.hpp"
+#include "editor/reflector_editor.hpp"
 #include "scene/scene.hpp"
 
 #include <glm/glm.hpp>

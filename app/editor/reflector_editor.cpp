@@ -1,5 +1,5 @@
 // The reflector editor's document model and handle math (see reflector_editor.hpp).
-#include "reflector_editor.hpp"
+#include "editor/reflector_editor.hpp"
 
 #include <algorithm>
 #include <cmath>

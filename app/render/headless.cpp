@@ -1,4 +1,6 @@
-#include "headless.hpp"
+#include "render/headless.hpp"
+
+#include "techniques/technique_table.hpp"
 
 #include "hiz/hiz.h"
 
@@ -14,7 +16,9 @@ double median(std::vector<double> v) {
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-HeadlessRenderer::HeadlessRenderer(const vk::Context& ctx, Renderer& renderer) : ctx_(ctx), renderer_(renderer) {
+void HeadlessRenderer::setTechnique(const std::string& technique) { technique_ = techniqueDesc(technique).name; }
+
+HeadlessRenderer::HeadlessRenderer(const vk::Context& ctx, Renderer& renderer) : ctx_(ctx), renderer_(renderer), abTaps_(ctx) {
     VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pci.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
     pci.queueFamilyIndex = ctx.queueFamily();
@@ -101,7 +105,7 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
     std::vector<double> totals;
     bool reflectionCopied = false, glassCopied = false;
     uint32_t lastSlot = 0;
-    const uint32_t glassAtlas = static_cast<uint32_t>(renderer_.settings().number("glass_atlas"));
+    const uint32_t glassAtlas = settings_.values().glass.atlas;
     if (readReflection) ensureGlassReadback(glassAtlas);
     auto collect = [&](uint32_t slot) {
         if (!slotBusy_[slot]) return;
@@ -128,20 +132,21 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
         FrameRequest req;
         req.camera = camera;
         req.extent = extent;
+        req.technique = technique_;
+        req.settings = settings_.values();
         req.target = &targetImport_;
         const bool last = f + 1 == frames;
-        req.readback = last ? &readbackImport_ : nullptr;
-        req.reflectionReadback = last && readReflection ? &reflectionImport_ : nullptr;
-        req.glassReadback = last && readReflection ? &glassImport_ : nullptr;
-        req.ab = ab_;
-        req.abSplit = abSplit_;
+        abTaps_.attach(req.taps, ab_, abSplit_);
+        if (last) req.taps.push_back(readbackTap(ReadbackSource::Final, &readbackImport_));
+        if (last && readReflection) {
+            req.taps.push_back(readbackTap(ReadbackSource::Reflection, &reflectionImport_, &reflectionCopied));
+            req.taps.push_back(readbackTap(ReadbackSource::GlassAtlas, &glassImport_, &glassCopied));
+        }
         req.dumpGraph = last && dumpGraph;
         FrameRecord rec = renderer_.record(cmd, slot, req);
         if (last) {
             lastSlot = slot;
             result.warning = rec.warning;
-            reflectionCopied = rec.reflectionCopied;
-            glassCopied = rec.glassCopied;
             result.cullLog = rec.cullLog;
             result.dot = rec.dot;
         }
@@ -194,10 +199,12 @@ DepthCapture HeadlessRenderer::captureDepth(const scene::CameraPose& camera, VkE
     FrameRequest req;
     req.camera = camera;
     req.extent = extent;
+    req.technique = technique_;
+    req.settings = settings_.values();
     req.target = &targetImport_;
-    req.depthReadback = &depthImport;
-    req.hizReadback = &atlasImport;
-    const FrameRecord rec = renderer_.record(cmd, slot, req);
+    bool hizCopied = false;
+    req.taps = {readbackTap(ReadbackSource::Depth, &depthImport), readbackTap(ReadbackSource::Hierarchy, &atlasImport, &hizCopied)};
+    renderer_.record(cmd, slot, req);
     VK_CHECK(vkEndCommandBuffer(cmd));
     vk::submit(ctx_, cmd, fences_[slot]);
     VK_CHECK(vkWaitForFences(ctx_.device(), 1, &fences_[slot], VK_TRUE, UINT64_MAX));
@@ -208,7 +215,7 @@ DepthCapture HeadlessRenderer::captureDepth(const scene::CameraPose& camera, VkE
     result.depth.resize(size_t(extent.width) * extent.height);
     vmaInvalidateAllocation(ctx_.allocator(), depthBuffer.allocation, 0, VK_WHOLE_SIZE);
     std::memcpy(result.depth.data(), depthBuffer.mapped, depthBytes);
-    if (rec.hizCopied) {
+    if (hizCopied) {
         result.atlasWidth = atlas.x;
         result.atlasHeight = atlas.y;
         result.hizAtlas.resize(size_t(atlas.x) * atlas.y);

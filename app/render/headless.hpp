@@ -1,8 +1,11 @@
 #pragma once
 // Headless rendering: records frames through the Renderer, submits them two in flight, reads the
-// final image back and collects per-pass GPU timestamps. Used by `ppr capture` and the GPU tests.
-#include "compare_metrics.hpp"
-#include "renderer.hpp"
+// final image back and collects per-pass GPU timestamps. Used by `ppr capture`, compare, bench and the
+// GPU tests. It holds the caller's choices (technique, settings, A/B view) and hands them to every
+// frame's request by value.
+#include "compare/compare_metrics.hpp"
+#include "render/renderer.hpp"
+#include "render/taps.hpp"
 #include "util/image_io.hpp"
 
 #include <map>
@@ -48,6 +51,11 @@ public:
     // Renders one frame of the camera at the extent and reads back its depth and depth hierarchy.
     DepthCapture captureDepth(const scene::CameraPose& camera, VkExtent2D extent);
 
+    // The choices of the following captures. Throws std::runtime_error for an unknown technique.
+    void setTechnique(const std::string& technique);
+    const std::string& technique() const { return technique_; }
+    Settings& settings() { return settings_; }
+    const Settings& settings() const { return settings_; }
     // The viewer's A/B view for the following captures (tests).
     void setAb(AbView view, float split) {
         ab_ = view;
@@ -75,6 +83,9 @@ private:
     vk::Buffer glassReadback_;       // RGBA16F, the glass atlas (sized on first use, grown with --set glass_atlas)
     graph::ExternalBuffer glassImport_;
     uint32_t glassReadbackSize_ = 0;
+    std::string technique_ = "none";
+    Settings settings_;
+    AbCompareTaps abTaps_;
     AbView ab_ = AbView::Off;
     float abSplit_ = 0.5f;
     void ensureGlassReadback(uint32_t atlasSize);

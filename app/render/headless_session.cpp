@@ -1,4 +1,4 @@
-#include "headless_session.hpp"
+#include "render/headless_session.hpp"
 
 #include <cstdio>
 
@@ -13,9 +13,9 @@ HeadlessSession::HeadlessSession(const Options& o) : options(o) {
     std::printf("ppr: %s (%s, Vulkan %s)%s\n", ctx->info().name.c_str(), ctx->info().type.c_str(), ctx->info().apiVersionString.c_str(),
                 ctx->validationEnabled() ? ", validation + synchronization validation on" : "");
     renderer = std::make_unique<Renderer>(*ctx, scene);
-    for (const std::string& kv : o.sets) renderer->settings().apply(kv);
-    renderer->setTechnique(o.technique);
     headless = std::make_unique<HeadlessRenderer>(*ctx, *renderer);
+    for (const std::string& kv : o.sets) headless->settings().apply(kv);
+    headless->setTechnique(o.technique);
     extent = {o.width, o.height};
     frames = o.frames ? o.frames : 5;
 }

@@ -2,9 +2,9 @@
 // What `ppr capture` and `ppr compare` share: the scene and cameras from the options, a Vulkan context
 // (device line printed), the renderer with the --set values applied, the headless frame loop, the
 // per-camera output folders and the exit code.
-#include "cli.hpp"
-#include "headless.hpp"
-#include "scene_source.hpp"
+#include "cli/cli.hpp"
+#include "cli/scene_source.hpp"
+#include "render/headless.hpp"
 
 #include <filesystem>
 #include <memory>

@@ -5,14 +5,15 @@
 //   PPR_VIEWER_FRAMES=N         exit by itself after N presented frames (exit code 0 unless validation errors)
 //   PPR_VIEWER_SCREENSHOT_AT=N  save a capture (like F12) after frame N
 //   SIGINT / SIGTERM            close the window cleanly (exit code 0 unless validation errors)
-#include "viewer.hpp"
+#include "viewer/viewer.hpp"
 
-#include "editor_ui.hpp"
+#include "editor/editor_ui.hpp"
 
-#include "headless.hpp"
-#include "report.hpp"
-#include "scene_source.hpp"
-#include "viewer_ui.hpp"
+#include "capture/report.hpp"
+#include "cli/scene_source.hpp"
+#include "render/headless.hpp"
+#include "techniques/technique_table.hpp"
+#include "viewer/viewer_ui.hpp"
 #include "vk/swapchain.hpp"
 
 #define GLFW_INCLUDE_VULKAN
@@ -165,6 +166,11 @@ private:
     std::unique_ptr<ImGuiLayer> imgui_;
     FrameSync sync_;
     std::unique_ptr<HeadlessRenderer> headless_;  // captures, created on the first one
+    // The user's choices, handed to every frame's request by value.
+    std::string technique_;
+    Settings settings_;
+    std::unique_ptr<AbCompareTaps> abTaps_;
+    std::unique_ptr<PickTap> pickTap_;
 
     scene::FlyCamera camera_;
     std::string cameraName_;
@@ -237,8 +243,10 @@ Viewer::Viewer(const Options& o, vk::Context& ctx, const scene::Scene& scene) : 
         pickImport_[i].desc = {sizeof(gpu::PickResult)};
         pickImport_[i].finalAccess = graph::Access::HostRead;
     }
-    for (const std::string& kv : o.sets) renderer_->settings().apply(kv);
-    renderer_->setTechnique(o.technique);
+    for (const std::string& kv : o.sets) settings_.apply(kv);
+    technique_ = techniqueDesc(o.technique).name;
+    abTaps_ = std::make_unique<AbCompareTaps>(ctx);
+    pickTap_ = std::make_unique<PickTap>(ctx);
     renderer_->prepareTargetFormat(swapchain_->format());
     uiPass_ = std::make_unique<passes::UiPass>(ctx);
     imgui_ = std::make_unique<ImGuiLayer>(ctx, window_.handle, *uiPass_, swapchain_->format(), swapchain_->imageCount());
@@ -335,8 +343,8 @@ void Viewer::buildUi() {
     m.cameraIndex = cameraIndex_;
     m.cameraSpeed = camera_.speed;
     m.vsync = vsync_;
-    m.settings = &renderer_->settings();
-    m.technique = renderer_->technique();
+    m.settings = &settings_;
+    m.technique = technique_;
     m.warning = warning_;
     m.timings = &timings_;
     m.pprStats = pprStats_;
@@ -377,7 +385,7 @@ void Viewer::buildUi() {
         swapchainDirty_ = true;
     }
     if (a.capture) captureRequested_ = true;
-    if (!a.technique.empty()) renderer_->setTechnique(a.technique);
+    if (!a.technique.empty()) technique_ = a.technique;
 }
 
 bool Viewer::renderFrame(uint32_t slot) {
@@ -412,20 +420,19 @@ bool Viewer::renderFrame(uint32_t slot) {
     req.camera = camera_.pose;
     req.extent = extent;
     req.target = &target;
-    req.overlay = [this](graph::RenderGraph& g, graph::ImageHandle image) { return imgui_->addPass(g, image); };
-    req.ab = ab_;
-    req.abSplit = abSplit_;
+    // Hold-to-compare: while B is held the frame shows the planar ground truth.
+    const bool holdCompare = !imgui_->wantsKeyboard() && glfwGetKey(window_.handle, GLFW_KEY_B) == GLFW_PRESS;
+    req.technique = holdCompare ? "planar" : technique_;
+    req.settings = settings_.values();
     if (pendingClick_) {  // the G-buffer under the click, read back once this slot's fence signals
-        req.pickPixel = pickPixel_;
-        req.pickResult = &pickImport_[slot];
+        req.taps.push_back(pickTap_->tap(pickPixel_, &pickImport_[slot]));
         pickIssued_[slot] = true;
     }
-    // Hold-to-compare: while B is held the frame shows the planar ground truth.
-    const std::string technique = renderer_->technique();
-    const bool holdCompare = !imgui_->wantsKeyboard() && glfwGetKey(window_.handle, GLFW_KEY_B) == GLFW_PRESS;
-    if (holdCompare) renderer_->setTechnique("planar");
+    abTaps_->attach(req.taps, ab_, abSplit_);
+    req.taps.push_back({TapPoint::AfterOutput, [this](TapContext& t) {
+                            t.board.put(FinalColor{imgui_->addPass(t.graph, t.board.get<FinalColor>().image)});
+                        }});
     const FrameRecord rec = renderer_->record(cmd, slot, req);
-    if (holdCompare) renderer_->setTechnique(technique);
     if (!rec.cullLog.empty() && frames_ == 0) std::fprintf(stderr, "%s", rec.cullLog.c_str());
     warning_ = rec.warning;
     VK_CHECK(vkEndCommandBuffer(cmd));
@@ -455,6 +462,8 @@ void Viewer::saveCapture() {
         // The capture re-uses the renderer's frame slots; the viewer's own timings there are stale now.
         for (bool& b : sync_.busy) b = false;
         if (!headless_) headless_ = std::make_unique<HeadlessRenderer>(ctx_, *renderer_);
+        headless_->setTechnique(technique_);
+        headless_->settings() = settings_;
         const VkExtent2D extent = swapchain_->extent();
         const uint32_t errorsBefore = ctx_.validationErrors();
         CaptureResult r = headless_->capture(camera_.pose, extent, 3);
@@ -470,9 +479,9 @@ void Viewer::saveCapture() {
         info.camera = cameraName_;
         info.pose = camera_.pose;
         info.size = extent;
-        info.technique = renderer_->technique();
+        info.technique = technique_;
         info.reflectors = renderer_->reflectors().size();
-        info.settings = &renderer_->settings();
+        info.settings = &settings_;
         info.validationEnabled = ctx_.validationEnabled();
         info.validationErrors = ctx_.validationErrors() - errorsBefore;
         info.images = {{"final", "final.png"}};
@@ -529,9 +538,9 @@ void Viewer::run(uint64_t maxFrames, uint64_t captureAt) {
 
         const Clock::time_point cpuStart = Clock::now();
         for (; input_.cycleDebug > 0; --input_.cycleDebug)
-            if (!imgui_->wantsTextInput()) cycleDebugView(renderer_->settings());
+            if (!imgui_->wantsTextInput()) cycleDebugView(settings_);
         for (; input_.cycleTechnique > 0; --input_.cycleTechnique)
-            if (!imgui_->wantsTextInput()) renderer_->setTechnique(nextTechnique(renderer_->technique()));
+            if (!imgui_->wantsTextInput()) technique_ = nextTechnique(technique_);
         if (input_.capture) {
             input_.capture = false;
             if (!imgui_->wantsTextInput()) captureRequested_ = true;

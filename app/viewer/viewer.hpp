@@ -1,5 +1,5 @@
 #pragma once
-#include "cli.hpp"
+#include "cli/cli.hpp"
 
 namespace ppr::app {
 // True when a window can be opened (X11/Wayland display reachable).

@@ -1,6 +1,7 @@
-#include "viewer_ui.hpp"
+#include "viewer/viewer_ui.hpp"
 
-#include "headless.hpp"  // median()
+#include "render/headless.hpp"  // median()
+#include "settings/debug_views.hpp"
 
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
@@ -166,75 +167,70 @@ std::string nextTechnique(const std::string& current) {
 }
 
 std::string cycleDebugView(Settings& settings) {
-    for (const SettingSpec& s : settingSpecs()) {
-        if (s.key != "debug" || s.choices.empty()) continue;
-        auto it = std::find(s.choices.begin(), s.choices.end(), settings.get("debug"));
-        size_t next = it == s.choices.end() ? 0 : (static_cast<size_t>(it - s.choices.begin()) + 1) % s.choices.size();
-        settings.set("debug", s.choices[next]);
-        return s.choices[next];
-    }
-    return {};
+    const std::vector<DebugViewDecl>& views = debugViews();
+    const uint32_t current = settings.values().view.debug;
+    auto it = std::find_if(views.begin(), views.end(), [&](const DebugViewDecl& v) { return v.value == current; });
+    const size_t next = it == views.end() ? 0 : (static_cast<size_t>(it - views.begin()) + 1) % views.size();
+    settings.set("debug", views[next].name);
+    return views[next].name;
 }
 
 namespace {
-
-bool isIntegral(double v) { return std::isfinite(v) && std::floor(v) == v; }
 
 void helpTooltip(const std::string& help) {
     if (!help.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", help.c_str());
 }
 
-// One widget per registered setting; every change goes through Settings::set (shared validation).
-void settingWidget(const SettingSpec& spec, PanelModel& m) {
+// One widget per declared setting, by its kind; every change goes through Settings::set (the same
+// validation as --set).
+void settingWidget(const SettingDecl& decl, PanelModel& m) {
     Settings& settings = *m.settings;
     auto apply = [&](const std::string& value) {
         try {
-            settings.set(spec.key, value);
+            settings.set(decl.key, value);
         } catch (const std::exception& e) {
             m.status = e.what();
         }
     };
-    const std::string& current = settings.get(spec.key);
-    if (!spec.choices.empty()) {
-        if (ImGui::BeginCombo(spec.key.c_str(), current.c_str())) {
-            for (const std::string& c : spec.choices) {
-                const bool selected = c == current;
-                if (ImGui::Selectable(c.c_str(), selected) && !selected) apply(c);
-                if (selected) ImGui::SetItemDefaultFocus();
+    const std::string current = settings.get(decl.key);
+    const std::string help = decl.help + " [" + decl.owner + "; default " + decl.defaultValue + "]";
+    switch (decl.kind) {
+        case SettingKind::Toggle: {
+            bool on = current == "1";
+            if (ImGui::Checkbox(decl.key.c_str(), &on)) apply(on ? "1" : "0");
+            break;
+        }
+        case SettingKind::Choice:
+            if (ImGui::BeginCombo(decl.key.c_str(), current.c_str())) {
+                for (const std::string& c : decl.choices) {
+                    const bool selected = c == current;
+                    if (ImGui::Selectable(c.c_str(), selected) && !selected) apply(c);
+                    if (selected) ImGui::SetItemDefaultFocus();
+                }
+                ImGui::EndCombo();
             }
-            ImGui::EndCombo();
+            break;
+        case SettingKind::Integer: {
+            ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp;
+            if (decl.min > 0.0 && decl.max / decl.min >= 100.0) flags |= ImGuiSliderFlags_Logarithmic;
+            int v = static_cast<int>(std::lround(settings.number(decl.key)));
+            if (ImGui::SliderInt(decl.key.c_str(), &v, static_cast<int>(decl.min), static_cast<int>(decl.max), "%d", flags))
+                apply(std::to_string(std::clamp(v, static_cast<int>(decl.min), static_cast<int>(decl.max))));
+            break;
         }
-        helpTooltip(spec.help);
-        return;
-    }
-    double value = 0.0;
-    try {
-        value = settings.number(spec.key);
-    } catch (const std::exception&) {
-        value = spec.min;
-    }
-    ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp;
-    if (spec.min > 0.0 && spec.max / spec.min >= 100.0) flags |= ImGuiSliderFlags_Logarithmic;
-    double defaultValue = 0.0;
-    try {
-        defaultValue = std::stod(spec.defaultValue);
-    } catch (const std::exception&) {
-    }
-    const bool integral = isIntegral(spec.min) && isIntegral(spec.max) && isIntegral(defaultValue) &&
-                          spec.defaultValue.find_first_of(".eE") == std::string::npos && spec.max <= 2e9 && spec.min >= -2e9;
-    if (integral) {
-        int v = static_cast<int>(std::lround(value));
-        if (ImGui::SliderInt(spec.key.c_str(), &v, static_cast<int>(spec.min), static_cast<int>(spec.max), "%d", flags))
-            apply(std::to_string(std::clamp(v, static_cast<int>(spec.min), static_cast<int>(spec.max))));
-    } else {
-        float v = static_cast<float>(value);
-        if (ImGui::SliderFloat(spec.key.c_str(), &v, static_cast<float>(spec.min), static_cast<float>(spec.max), "%.3g", flags)) {
-            char text[32];
-            std::snprintf(text, sizeof text, "%.6g", std::clamp(static_cast<double>(v), spec.min, spec.max));
-            apply(text);
+        case SettingKind::Number: {
+            ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp;
+            if (decl.min > 0.0 && decl.max / decl.min >= 100.0) flags |= ImGuiSliderFlags_Logarithmic;
+            float v = static_cast<float>(settings.number(decl.key));
+            if (ImGui::SliderFloat(decl.key.c_str(), &v, static_cast<float>(decl.min), static_cast<float>(decl.max), "%.3g", flags)) {
+                char text[32];
+                std::snprintf(text, sizeof text, "%.6g", std::clamp(static_cast<double>(v), decl.min, decl.max));
+                apply(text);
+            }
+            break;
         }
     }
-    helpTooltip(spec.help + " (ctrl+click to type a value)");
+    helpTooltip(decl.kind == SettingKind::Number || decl.kind == SettingKind::Integer ? help + " (ctrl+click to type a value)" : help);
 }
 
 }  // namespace
@@ -310,7 +306,7 @@ PanelActions drawPanel(PanelModel& m) {
     }
 
     if (ImGui::CollapsingHeader("Settings", ImGuiTreeNodeFlags_DefaultOpen)) {
-        for (const SettingSpec& spec : settingSpecs()) settingWidget(spec, m);
+        for (const SettingDecl& decl : settingDecls()) settingWidget(decl, m);
     }
 
     if (ImGui::CollapsingHeader("GPU passes", ImGuiTreeNodeFlags_DefaultOpen) && m.timings) {

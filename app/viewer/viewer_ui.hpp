@@ -3,9 +3,10 @@
 // backends drawn through passes::UiPass, the rolling per-pass GPU timing history, and the "ppr"
 // panel (device, frame times, cameras, vsync, every --set setting, GPU timing table, capture).
 #include "ppr_common/tiles.h"
-#include "renderer.hpp"
-#include "scene_source.hpp"
-#include "techniques.hpp"
+#include "render/renderer.hpp"
+#include "render/taps.hpp"
+#include "cli/scene_source.hpp"
+#include "techniques/technique_table.hpp"
 #include "ui/ui_pass.hpp"
 
 #include <deque>

@@ -25,7 +25,7 @@ struct FrameConstants {
 PPR_END
 PPR_SIZE_CHECK(FrameConstants, 5 * 64 + 5 * 16 + 16 + 16);
 
-// Debug views selectable with --set debug=...
+// Debug views selectable with --set debug=... (names and help: app/settings/debug_views.cpp)
 PPR_CONST(uint, kDebugNone, 0u)
 PPR_CONST(uint, kDebugAlbedo, 1u)
 PPR_CONST(uint, kDebugNormals, 2u)
@@ -37,5 +37,6 @@ PPR_CONST(uint, kDebugIntermediate, 7u)  // PPR: the decoded intermediate buffer
 PPR_CONST(uint, kDebugHoles, 8u)         // PPR: own data / hole-filled / no data per reflector pixel
 PPR_CONST(uint, kDebugTiles, 9u)         // PPR: reflectors surviving per-tile culling, as a heat map
 PPR_CONST(uint, kDebugAtlas, 10u)        // PPR: the glass reflection atlas, fitted to the screen height
+PPR_CONST(uint, kDebugViewCount, 11u)    // app/settings/debug_views.cpp names each of them once
 
 #endif

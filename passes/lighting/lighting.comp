@@ -56,5 +56,7 @@ void main() {
     vec3 ambientDiffuse = mix(frame.groundColor.rgb, frame.skyColor.rgb, n.y * 0.5 + 0.5) * albedo * (1.0 - metallic);
     vec3 ambientSpecular = skyRadiance(reflect(-v, n)) * fresnelSchlick(nv, f0) * (1.0 - roughness) * 0.5;
     vec3 color = direct + (ambientDiffuse + ambientSpecular) * frame.skyColor.w;
+    // --set debug=shadow: the sun's visibility (the composite divides debug views by the exposure).
+    if (frame.debugView == kDebugShadow) color = vec3(shadow * frame.lightColor.w);
     imageStore(outColor, pix, vec4(color, 1.0));
 }

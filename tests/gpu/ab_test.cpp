@@ -10,7 +10,7 @@ namespace {
 constexpr VkExtent2D kSize{320, 180};
 
 util::Rgba8Image renderFinal(GpuFixture& f, const std::string& technique, app::AbView ab, float split) {
-    f.renderer->setTechnique(technique);
+    f.headless->setTechnique(technique);
     f.headless->setAb(ab, split);
     util::Rgba8Image img = f.headless->capture(f.camera("stairs"), kSize, 1).image;
     f.headless->setAb(app::AbView::Off, 0.5f);

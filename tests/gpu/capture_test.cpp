@@ -49,9 +49,9 @@ TEST(Capture, DebugViewsChangeTheImage) {
     GpuFixture f;
     const scene::CameraPose cam = f.camera("overview");
     app::CaptureResult lit = f.headless->capture(cam, {320, 180}, 1);
-    f.renderer->settings().set("debug", "normals");
+    f.headless->settings().set("debug", "normals");
     app::CaptureResult normals = f.headless->capture(cam, {320, 180}, 1);
-    f.renderer->settings().set("debug", "reflectors");
+    f.headless->settings().set("debug", "reflectors");
     app::CaptureResult reflectors = f.headless->capture(cam, {320, 180}, 1);
     EXPECT_FALSE(lit.image.pixels == normals.image.pixels);
     EXPECT_FALSE(lit.image.pixels == reflectors.image.pixels) << "no reflector ids in the G-buffer?";

@@ -2,7 +2,7 @@
 // overlapping on screen keeping to their own regions, and atlas overflow, with validation +
 // synchronization validation on.
 #include "common/reflection.h"
-#include "compare_metrics.hpp"
+#include "compare/compare_metrics.hpp"
 #include "gpu_test_util.hpp"
 
 namespace ppr::test {
@@ -11,7 +11,7 @@ namespace {
 constexpr VkExtent2D kSize{640, 360};
 
 app::CaptureResult render(GpuFixture& f, const std::string& technique, const scene::CameraPose& pose) {
-    f.renderer->setTechnique(technique);
+    f.headless->setTechnique(technique);
     return f.headless->capture(pose, kSize, 1, false, true);
 }
 
@@ -35,7 +35,7 @@ app::PixelRect regionRect(const scene::GlassRegion& r) {
 
 TEST(Glass, PuddleSeenThroughGlassAndTheGlassReflectionMatchTheGroundTruth) {
     GpuFixture f;
-    const float exposure = static_cast<float>(f.renderer->settings().number("exposure"));
+    const float exposure = static_cast<float>(f.headless->settings().number("exposure"));
     const scene::CameraPose pose = f.camera("glass");
     const app::CaptureResult ref = render(f, "planar", pose);
     const app::CaptureResult ppr = render(f, "ppr", pose);
@@ -62,9 +62,9 @@ TEST(Glass, PuddleSeenThroughGlassAndTheGlassReflectionMatchTheGroundTruth) {
     EXPECT_GE(glassComposited, 31.0);
     EXPECT_GE(glass.coverage, 0.98);
     // Without glass reflections the pane only transmits: the glass score falls far below.
-    f.renderer->settings().set("glass", "0");
+    f.headless->settings().set("glass", "0");
     const app::CaptureResult off = render(f, "ppr", pose);
-    f.renderer->settings().set("glass", "1");
+    f.headless->settings().set("glass", "1");
     EXPECT_FALSE(off.glass.has_value());
     EXPECT_TRUE(off.glassReflection.rgba.empty());
     EXPECT_LT(app::compositedPsnrDb(off.image, ref.image, mask), glassComposited - 3.0);
@@ -73,7 +73,7 @@ TEST(Glass, PuddleSeenThroughGlassAndTheGlassReflectionMatchTheGroundTruth) {
 
 TEST(Glass, OverlappingPanelsKeepToTheirOwnRegions) {
     GpuFixture f;
-    const float exposure = static_cast<float>(f.renderer->settings().number("exposure"));
+    const float exposure = static_cast<float>(f.headless->settings().number("exposure"));
     std::vector<scene::Reflector> reflectors = f.scene.reflectors;
     // Two panes in front of the east glass, overlapping it and each other on screen.
     reflectors.push_back(panel("pane_a", {9.6f, 1.3f, -0.6f}, {0.9f, 0.6f}));
@@ -110,7 +110,7 @@ TEST(Glass, OverlappingPanelsKeepToTheirOwnRegions) {
 
 TEST(Glass, AnOverflowingAtlasDegradesPredictablyAndReportsIt) {
     GpuFixture f;
-    const float exposure = static_cast<float>(f.renderer->settings().number("exposure"));
+    const float exposure = static_cast<float>(f.headless->settings().number("exposure"));
     std::vector<scene::Reflector> reflectors = f.scene.reflectors;
     for (int i = 0; i < 6; ++i)  // large panes filling the view, one behind the other
         reflectors.push_back(panel("pane_" + std::to_string(i), {9.9f - 0.5f * i, 1.5f, -1.0f + 0.3f * i}, {2.0f, 1.4f}));
@@ -118,7 +118,7 @@ TEST(Glass, AnOverflowingAtlasDegradesPredictablyAndReportsIt) {
     const scene::CameraPose pose = f.camera("glass");
     // 256: every region scaled down by one factor; 96: even 1/8 does not fit, the farthest are dropped.
     for (const char* atlas : {"256", "96"}) {
-        f.renderer->settings().set("glass_atlas", atlas);
+        f.headless->settings().set("glass_atlas", atlas);
         const app::CaptureResult ref = render(f, "planar", pose);
         const app::CaptureResult ppr = render(f, "ppr", pose);
         ASSERT_TRUE(ppr.glass) << atlas;

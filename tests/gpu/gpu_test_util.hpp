@@ -1,8 +1,8 @@
 #pragma once
 // Helpers shared by the GPU tests: a validated context + default scene, image statistics, running
 // the ppr executable.
-#include "headless.hpp"
-#include "scene_source.hpp"
+#include "render/headless.hpp"
+#include "cli/scene_source.hpp"
 
 #include <gtest/gtest.h>
 

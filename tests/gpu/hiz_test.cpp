@@ -66,7 +66,7 @@ void expectAtlasIsMinOfDepth(const app::DepthCapture& c, const std::string& what
 // (Suite `hiz`, lower case like the unit tests' folder, so `ctest -R hiz` runs both.)
 TEST(hiz, AtlasIsTheMinReductionOfTheDepthBuffer) {
     GpuFixture f;
-    f.renderer->setTechnique("ssr-hiz");
+    f.headless->setTechnique("ssr-hiz");
     for (VkExtent2D size : {VkExtent2D{320, 180}, VkExtent2D{203, 117}})
         for (const char* camera : {"overview", "puddles"}) {
             const app::DepthCapture c = f.headless->captureDepth(f.camera(camera), size);
@@ -77,7 +77,7 @@ TEST(hiz, AtlasIsTheMinReductionOfTheDepthBuffer) {
 
 TEST(hiz, NoHierarchyWithoutATechniqueThatUsesIt) {
     GpuFixture f;
-    f.renderer->setTechnique("ssr-brute");
+    f.headless->setTechnique("ssr-brute");
     const app::DepthCapture c = f.headless->captureDepth(f.camera("overview"), {160, 90});
     EXPECT_EQ(c.atlasWidth, 0u);
     EXPECT_TRUE(c.hizAtlas.empty());

@@ -1,6 +1,6 @@
 // PPR against the planar ground truth on the default scene's named cameras, and PPR's invariants
 // (toggles, debug views), with validation + synchronization validation on.
-#include "compare_metrics.hpp"
+#include "compare/compare_metrics.hpp"
 #include "gpu_test_util.hpp"
 #include "scene/camera.hpp"
 
@@ -19,7 +19,7 @@ struct Rendered {
 };
 
 Rendered render(GpuFixture& f, const std::string& technique, const std::string& camera, VkExtent2D size = kSize) {
-    f.renderer->setTechnique(technique);
+    f.headless->setTechnique(technique);
     app::CaptureResult r = f.headless->capture(f.camera(camera), size, 1, false, true);
     return {std::move(r.image), std::move(r.reflection)};
 }
@@ -37,7 +37,7 @@ const std::map<std::string, Expected> kExpected = {
 
 TEST(PprVsPlanar, EveryNamedCameraMatchesTheGroundTruth) {
     GpuFixture f;
-    const float exposure = static_cast<float>(f.renderer->settings().number("exposure"));
+    const float exposure = static_cast<float>(f.headless->settings().number("exposure"));
     for (const auto& [camera, expected] : kExpected) {
         const Rendered ref = render(f, "planar", camera);
         const Rendered ppr = render(f, "ppr", camera);
@@ -59,13 +59,13 @@ TEST(PprVsPlanar, EveryNamedCameraMatchesTheGroundTruth) {
 
 TEST(PprVsPlanar, HoleFillingRaisesCoverage) {
     GpuFixture f;
-    const float exposure = static_cast<float>(f.renderer->settings().number("exposure"));
+    const float exposure = static_cast<float>(f.headless->settings().number("exposure"));
     double with = 0.0, without = 0.0;
     for (const std::string camera : {"overview", "stairs", "puddles"}) {
         const Rendered ref = render(f, "planar", camera);
-        f.renderer->settings().set("holes", "1");
+        f.headless->settings().set("holes", "1");
         with += app::scoreReflection(render(f, "ppr", camera).reflection, ref.reflection, exposure).coverage;
-        f.renderer->settings().set("holes", "0");
+        f.headless->settings().set("holes", "0");
         without += app::scoreReflection(render(f, "ppr", camera).reflection, ref.reflection, exposure).coverage;
     }
     std::printf("mean coverage: holes=1 %.4f, holes=0 %.4f\n", with / 3, without / 3);
@@ -76,11 +76,11 @@ TEST(PprVsPlanar, HoleFillingRaisesCoverage) {
 // Pixels of the G-buffer's reflector surfaces, found independently of PPR: where the reflector-id
 // debug view differs from the plain lit image.
 std::vector<bool> reflectorPixels(GpuFixture& f, const std::string& camera) {
-    f.renderer->setTechnique("none");
+    f.headless->setTechnique("none");
     const util::Rgba8Image plain = f.headless->capture(f.camera(camera), kSize, 1).image;
-    f.renderer->settings().set("debug", "reflectors");
+    f.headless->settings().set("debug", "reflectors");
     const util::Rgba8Image ids = f.headless->capture(f.camera(camera), kSize, 1).image;
-    f.renderer->settings().set("debug", "none");
+    f.headless->settings().set("debug", "none");
     std::vector<bool> mask(size_t(kSize.width) * kSize.height);
     for (size_t i = 0; i < mask.size(); ++i)
         mask[i] = !std::equal(&plain.pixels[i * 4], &plain.pixels[i * 4 + 3], &ids.pixels[i * 4]);
@@ -90,12 +90,12 @@ std::vector<bool> reflectorPixels(GpuFixture& f, const std::string& camera) {
 TEST(PprToggles, FilteringChangesOnlyReflectorPixels) {
     GpuFixture f;
     // Glass panels (drawn after the G-buffer, so not in this pixel mask) filter their reflections too.
-    f.renderer->settings().set("glass", "0");
+    f.headless->settings().set("glass", "0");
     for (const std::string camera : {"puddles", "mirror"}) {
         const std::vector<bool> reflector = reflectorPixels(f, camera);
-        f.renderer->settings().set("filter", "1");
+        f.headless->settings().set("filter", "1");
         const Rendered on = render(f, "ppr", camera);
-        f.renderer->settings().set("filter", "0");
+        f.headless->settings().set("filter", "0");
         const Rendered off = render(f, "ppr", camera);
         size_t changed = 0, changedOutside = 0;
         for (size_t i = 0; i < reflector.size(); ++i) {
@@ -112,12 +112,12 @@ TEST(PprToggles, FilteringChangesOnlyReflectorPixels) {
 TEST(PprToggles, AntiBleedingAndDebugViewsRenderAndDiffer) {
     GpuFixture f;
     const Rendered all = render(f, "ppr", "puddles");
-    f.renderer->settings().set("antibleed", "0");
+    f.headless->settings().set("antibleed", "0");
     const Rendered bleeding = render(f, "ppr", "puddles");
-    f.renderer->settings().set("antibleed", "1");
+    f.headless->settings().set("antibleed", "1");
     EXPECT_FALSE(all.final.pixels == bleeding.final.pixels);
     for (const char* view : {"intermediate", "holes"}) {
-        f.renderer->settings().set("debug", view);
+        f.headless->settings().set("debug", view);
         const Rendered debug = render(f, "ppr", "puddles");
         EXPECT_FALSE(debug.final.pixels == all.final.pixels) << view;
         EXPECT_GT(lumaStdDev(debug.final), 5.0) << view;
@@ -149,7 +149,7 @@ TEST(PprVsPlanar, NearerObjectWinsInTheReflection) {
     region.y = static_cast<uint32_t>(std::max(0.0f, lo.y));
     region.width = static_cast<uint32_t>(std::min<float>(kSize.width, hi.x) - region.x);
     region.height = static_cast<uint32_t>(std::min<float>(kSize.height, hi.y) - region.y);
-    const float exposure = static_cast<float>(f.renderer->settings().number("exposure"));
+    const float exposure = static_cast<float>(f.headless->settings().number("exposure"));
     const app::ReflectionScore s = app::scoreReflection(ppr.reflection, ref.reflection, exposure, region);
     std::printf("pot region %ux%u at (%u,%u): psnr_reflection_db %.2f coverage %.4f scored %llu\n", region.width, region.height, region.x,
                 region.y, s.psnrDb, s.coverage, static_cast<unsigned long long>(s.maskPixels));

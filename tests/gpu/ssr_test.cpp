@@ -1,7 +1,7 @@
 // The screen-space ray-marched baselines against the planar ground truth on every named camera of the
 // default scene, and against each other, with validation + synchronization validation on.
 #include "common/reflection.h"
-#include "compare_metrics.hpp"
+#include "compare/compare_metrics.hpp"
 #include "gpu_test_util.hpp"
 #include "tonemap/tonemap.h"
 
@@ -17,7 +17,7 @@ const char* const kCameras[] = {"overview", "puddles", "grazing", "stairs", "mir
 const char* const kSsrTechniques[] = {"ssr-brute", "ssr-lowq", "ssr-hiz", "ssr-linear"};
 
 app::FloatImage renderReflection(GpuFixture& f, const std::string& technique, const std::string& camera, util::Rgba8Image* final = nullptr) {
-    f.renderer->setTechnique(technique);
+    f.headless->setTechnique(technique);
     app::CaptureResult r = f.headless->capture(f.camera(camera), kSize, 1, false, true);
     if (final) *final = std::move(r.image);
     return std::move(r.reflection);
@@ -44,7 +44,7 @@ const std::map<std::string, std::map<std::string, Expected>> kExpected = {
 
 TEST(SsrVsPlanar, EveryTechniqueRendersEveryCameraAndScores) {
     GpuFixture f;
-    const float exposure = static_cast<float>(f.renderer->settings().number("exposure"));
+    const float exposure = static_cast<float>(f.headless->settings().number("exposure"));
     std::map<std::string, double> meanDb;
     for (const char* camera : kCameras) {
         const app::FloatImage ref = renderReflection(f, "planar", camera);
@@ -116,7 +116,7 @@ const std::map<std::string, std::map<std::string, Tolerance>> kAgreement = {
 
 TEST(SsrFamily, LowQualityAndHierarchicalAgreeWithBruteForceWhereAllThreeHit) {
     GpuFixture f;
-    const float exposure = static_cast<float>(f.renderer->settings().number("exposure"));
+    const float exposure = static_cast<float>(f.headless->settings().number("exposure"));
     for (const char* camera : kCameras) {
         const app::FloatImage brute = renderReflection(f, "ssr-brute", camera);
         const app::FloatImage lowq = renderReflection(f, "ssr-lowq", camera);
@@ -139,11 +139,11 @@ TEST(SsrFamily, IndirectAndWholeScreenDispatchAreBitIdentical) {
     GpuFixture f;
     for (const char* camera : {"puddles", "mirror"}) {
         for (const char* technique : {"ssr-brute", "ssr-lowq", "ssr-hiz", "ssr-linear", "ppr"}) {
-            f.renderer->settings().set("indirect", "1");
+            f.headless->settings().set("indirect", "1");
             const app::FloatImage indirect = renderReflection(f, technique, camera);
-            f.renderer->settings().set("indirect", "0");
+            f.headless->settings().set("indirect", "0");
             const app::FloatImage whole = renderReflection(f, technique, camera);
-            f.renderer->settings().set("indirect", "1");
+            f.headless->settings().set("indirect", "1");
             ASSERT_EQ(indirect.rgba.size(), whole.rgba.size());
             EXPECT_EQ(std::memcmp(indirect.rgba.data(), whole.rgba.data(), whole.rgba.size() * sizeof(float)), 0)
                 << technique << " " << camera << " (ppr: with its fallback)";
@@ -156,10 +156,10 @@ TEST(SsrFamily, IndirectAndWholeScreenDispatchAreBitIdentical) {
 // pixels whose material is flagged reflective (debug=roughness shows the flag in blue).
 std::vector<bool> otherReflectivePixels(GpuFixture& f, const std::string& camera) {
     auto finalWith = [&](const std::string& debug) {
-        f.renderer->settings().set("debug", debug);
-        f.renderer->setTechnique("none");
+        f.headless->settings().set("debug", debug);
+        f.headless->setTechnique("none");
         util::Rgba8Image img = f.headless->capture(f.camera(camera), kSize, 1).image;
-        f.renderer->settings().set("debug", "none");
+        f.headless->settings().set("debug", "none");
         return img;
     };
     const util::Rgba8Image plain = finalWith("none"), ids = finalWith("reflectors"), material = finalWith("roughness");
@@ -179,10 +179,10 @@ TEST(PprFallback, ShadesTheNonPlanarReflectiveSurfacesOnly) {
         const size_t otherCount = std::count(other.begin(), other.end(), true);
         ASSERT_GT(otherCount, 300u) << camera << ": the chrome sphere and the steel post should be in view";
 
-        f.renderer->settings().set("fallback", "none");
+        f.headless->settings().set("fallback", "none");
         util::Rgba8Image finalWithout, finalWith;
         const app::FloatImage without = renderReflection(f, "ppr", camera, &finalWithout);
-        f.renderer->settings().set("fallback", "ssr");
+        f.headless->settings().set("fallback", "ssr");
         const app::FloatImage with = renderReflection(f, "ppr", camera, &finalWith);
         const app::FloatImage hiz = renderReflection(f, "ssr-hiz", camera);
 

@@ -22,10 +22,10 @@ struct Frame {
 
 Frame render(GpuFixture& f, const scene::CameraPose& camera, const std::string& tiles, const std::string& indirect,
              const std::string& debug = "none") {
-    f.renderer->setTechnique("ppr");
-    f.renderer->settings().set("tiles", tiles);
-    f.renderer->settings().set("indirect", indirect);
-    f.renderer->settings().set("debug", debug);
+    f.headless->setTechnique("ppr");
+    f.headless->settings().set("tiles", tiles);
+    f.headless->settings().set("indirect", indirect);
+    f.headless->settings().set("debug", debug);
     Frame fr;
     fr.capture = f.headless->capture(camera, kSize, 1, false, true);
     fr.reflection = fr.capture.reflection;

@@ -1,6 +1,6 @@
 // Bench charts: image size, series colours, where points land on linear and log axes, tick
 // choice and labels, input validation, and side-by-side composition.
-#include "bench_plot.hpp"
+#include "bench/bench_plot.hpp"
 
 #include <gtest/gtest.h>
 

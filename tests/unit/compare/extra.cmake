@@ -1,2 +1,2 @@
-# The compare metrics and contact sheet live in ppr_app (with the rest of `ppr compare`).
-target_link_libraries(${exe} PRIVATE ppr_app)
+# Compare metrics, contact sheet and bench report: pure logic (no Vulkan, GLFW or ImGui).
+target_link_libraries(${exe} PRIVATE ppr_compare_metrics ppr_bench_report)

@@ -1,2 +1,2 @@
-# The reflector editor's document model lives in ppr_app (next to the viewer UI that drives it).
-target_link_libraries(${exe} PRIVATE ppr_app)
+# The reflector editor's document model: pure logic (no Vulkan, GLFW or ImGui).
+target_link_libraries(${exe} PRIVATE ppr_editor_model)

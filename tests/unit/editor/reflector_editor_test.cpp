@@ -1,6 +1,6 @@
 // The reflector editor's document model (app/reflector_editor.cpp): undo/redo, drags as one step,
 // the unsaved mark, snap creation, save/load and the handle math. Pure logic: no GPU, no UI.
-#include "reflector_editor.hpp"
+#include "editor/reflector_editor.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>

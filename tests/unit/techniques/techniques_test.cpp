@@ -1,6 +1,6 @@
 // Which passes count as a technique's cost (report.json technique_gpu_ms, compare, bench): the pure
-// naming rules of app/techniques.cpp.
-#include "techniques.hpp"
+// naming rules of the technique table (app/techniques/technique_table.cpp).
+#include "techniques/technique_table.hpp"
 
 #include <gtest/gtest.h>
 

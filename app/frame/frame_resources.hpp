@@ -1,0 +1,34 @@
+#pragma once
+// What the trunk and the techniques publish on a frame's blackboard (graph::Blackboard), one struct
+// per meaning. Taps (readbacks, pick, A/B, overlay) find what they read here.
+#include "gbuffer/gbuffer_pass.hpp"
+#include "glass_forward/glass_forward_pass.hpp"
+#include "graph/blackboard.hpp"
+#include "hiz/hiz_pass.hpp"
+
+namespace ppr::app {
+
+struct LitColor {  // lighting output (HDR), what every technique reflects
+    graph::ImageHandle image;
+};
+struct ShadowMap {
+    graph::ImageHandle image;
+};
+struct TechniqueReflection {  // the technique's reflection image (common/reflection.h), when it has one
+    graph::ImageHandle image;
+};
+struct ShownReflection {  // what the composite blends: the technique's, or A/B's split of it
+    graph::ImageHandle image;
+};
+struct DepthHierarchy {  // when the frame built one (ssr-hiz, PPR's fallback)
+    passes::HizAtlas atlas;
+};
+struct HdrColor {  // composited scene with glass, before tonemapping
+    graph::ImageHandle image;
+};
+struct FinalColor {  // tonemapped output (the target), before and after overlays
+    graph::ImageHandle image;
+};
+// Also published: passes::GBuffer, passes::GlassReflection (when a technique resolved glass).
+
+}  // namespace ppr::app

@@ -1,0 +1,77 @@
+#pragma once
+// What the trunk shares with the technique modules: the device, the GPU scene, the reflector set, the
+// frame constants (with mirrored views on request), the glass atlas, the tile-classification and
+// depth-hierarchy passes more than one technique uses, and the per-slot PPR counters buffer.
+#include "common/frame.h"
+#include "frame/frame_constants.hpp"
+#include "frame/frame_resources.hpp"
+#include "frame/glass_atlas_frame.hpp"
+#include "frame/reflector_set.hpp"
+#include "glass_reflect/glass_reflect_pass.hpp"
+#include "graph/blackboard.hpp"
+#include "hiz/hiz_pass.hpp"
+#include "lighting/lighting_pass.hpp"
+#include "ppr_common/tiles.h"
+#include "settings/frame_settings.hpp"
+#include "tile_classify/tile_classify_pass.hpp"
+
+#include <optional>
+#include <vector>
+
+namespace ppr::app {
+
+// PprFrameStats per frame in flight: tile classification adds its counts, PPR its culling counts;
+// host-read after the slot's fence.
+class FrameStatsBuffers {
+public:
+    FrameStatsBuffers(const vk::Context& ctx, uint32_t framesInFlight);
+    ~FrameStatsBuffers();
+    FrameStatsBuffers(const FrameStatsBuffers&) = delete;
+    FrameStatsBuffers& operator=(const FrameStatsBuffers&) = delete;
+    void beginFrame(uint32_t slot) { written_[slot] = false; }
+    graph::BufferHandle import(graph::RenderGraph& g, uint32_t slot) { return g.importBuffer("ppr.stats", &imports_[slot]); }
+    void markWritten(uint32_t slot) { written_[slot] = true; }  // the counters are meaningful (PPR ran)
+    std::optional<gpu::PprFrameStats> read(uint32_t slot) const;
+
+private:
+    const vk::Context& ctx_;
+    std::vector<vk::Buffer> buffers_;
+    std::vector<graph::ExternalBuffer> imports_;
+    std::vector<bool> written_;
+};
+
+struct FrameServices {
+    const vk::Context& ctx;
+    const gpu::GpuScene& scene;
+    const passes::GBufferPass& gbufferPass;
+    const passes::LightingPass& lightingPass;
+    ReflectorSet& reflectors;
+    FrameConstantsBuffer& constants;
+    GlassAtlasFrame& glass;
+    FrameStatsBuffers& stats;
+    const passes::TileClassifyPass& tileClassify;
+    const passes::HizPass& hiz;
+    const passes::GlassReflectPass& glassReflect;  // PPR's glass resolve; the trunk's atlas debug view
+};
+
+// One technique's view of the frame being recorded.
+struct TechniqueFrame {
+    graph::RenderGraph& graph;
+    graph::Blackboard& board;
+    FrameServices& services;
+    const FrameSettings& settings;
+    const passes::FrameInputs& in;
+    const passes::GBuffer& gbuffer;
+    graph::ImageHandle lit;
+    graph::ImageHandle shadowMap;
+    uint32_t slot = 0;
+    scene::CameraPose camera;
+
+    VkBuffer reflectorData() const { return services.reflectors.buffer().reflectors(slot); }
+    // The depth hierarchy of this frame's depth (built once, published as DepthHierarchy).
+    passes::HizAtlas depthHierarchy();
+    // Tile lists of this frame; reflector ids above maxReflectorId do not make a tile planar.
+    passes::TileLists classifyTiles(uint32_t maxReflectorId);
+};
+
+}  // namespace ppr::app

@@ -1,0 +1,49 @@
+#include "frame/glass_atlas_frame.hpp"
+
+#include "scene/camera.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace ppr::app {
+
+uint32_t GlassStats::usedHeight() const {
+    uint32_t rows = 0;
+    for (const scene::GlassRegion& r : layout) rows = std::max(rows, static_cast<uint32_t>(r.atlasOrigin.y + r.atlasSize.y));
+    return rows;
+}
+
+std::string GlassStats::overflowMessage() const {
+    if (!overflowed()) return {};
+    char scaleText[32];
+    std::snprintf(scaleText, sizeof scaleText, "%.3g", scale);
+    const std::string side = std::to_string(atlasSize);
+    return "glass atlas " + side + "x" + side + " overflowed: " + std::to_string(scaled) + " of " + std::to_string(visible) +
+           " visible glass panels' reflections scaled to " + scaleText + ", " + std::to_string(dropped) +
+           " dropped (the farthest first); raise --set glass_atlas";
+}
+
+uint32_t GlassAtlasFrame::pack(uint32_t slot, const GlassSettings& settings, const ReflectorSet& reflectors, const glm::mat4& viewProj,
+                               const glm::vec3& eye, VkExtent2D extent) {
+    stats_[slot].reset();
+    scene::GlassAtlasLayout layout;
+    const bool glass = settings.enabled && !reflectors.glassIndices().empty();
+    if (glass)
+        layout = scene::packGlassAtlas(reflectors.list(), reflectors.glassIndices(), viewProj, eye, scene::kNearPlane,
+                                       {extent.width, extent.height}, settings.atlas);
+    table_.fill(layout);
+    const uint32_t atlasSize = layout.regions.empty() ? 1u : settings.atlas;
+    if (glass) {
+        GlassStats stats;
+        stats.atlasSize = settings.atlas;
+        stats.visible = layout.visible;
+        stats.scaled = layout.scaled;
+        stats.dropped = layout.dropped;
+        stats.scale = layout.scale;
+        stats.layout = std::move(layout.regions);
+        stats_[slot] = std::move(stats);
+    }
+    return atlasSize;
+}
+
+}  // namespace ppr::app

@@ -1,0 +1,50 @@
+#pragma once
+// This frame's glass atlas, shared by the techniques that reflect in glass (PPR and the planar
+// reference pack the same layout): the CPU packing, the region table's upload and the counters that
+// report.json ("glass") and the viewer show.
+#include "frame/reflector_set.hpp"
+#include "glass_reflect/glass_regions.hpp"
+#include "scene/glass_atlas.hpp"
+#include "settings/frame_settings.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ppr::app {
+
+// What the glass atlas held in a frame (report.json "glass", the viewer).
+struct GlassStats {
+    uint32_t atlasSize = 0;  // texels per side (--set glass_atlas)
+    uint32_t visible = 0;    // glass panels on screen
+    uint32_t scaled = 0;     // regions scaled down to fit (overflow)
+    uint32_t dropped = 0;    // panels without a region (overflow: the farthest first)
+    float scale = 1.0f;      // the common scale of the regions
+    std::vector<scene::GlassRegion> layout;  // where each panel's region lies (screen and atlas)
+    uint32_t regions() const { return static_cast<uint32_t>(layout.size()); }  // panels with a region
+    uint32_t usedHeight() const;  // atlas rows holding regions (the rest is not dispatched)
+    bool overflowed() const { return scaled > 0 || dropped > 0; }
+    // One line saying how the atlas overflowed ("" when it did not).
+    std::string overflowMessage() const;
+};
+
+class GlassAtlasFrame {
+public:
+    explicit GlassAtlasFrame(uint32_t framesInFlight) : stats_(framesInFlight) {}
+
+    void reserve(uint32_t reflectors) { table_.reserve(reflectors); }  // once per reflector change
+    void beginFrame(uint32_t slot) { stats_[slot].reset(); }
+    // Packs the frame's atlas (stats(slot) is set when glass is on and panes exist); returns the atlas
+    // size to allocate (1 without a region: bound but unused).
+    uint32_t pack(uint32_t slot, const GlassSettings& settings, const ReflectorSet& reflectors, const glm::mat4& viewProj,
+                  const glm::vec3& eye, VkExtent2D extent);
+    // The region table's upload pass; its buffers are read by every glass consumer of the frame.
+    passes::GlassRegionBuffers upload(graph::RenderGraph& g) const { return table_.add(g); }
+    const std::optional<GlassStats>& stats(uint32_t slot) const { return stats_[slot]; }
+
+private:
+    passes::GlassRegionTable table_;
+    std::vector<std::optional<GlassStats>> stats_;
+};
+
+}  // namespace ppr::app

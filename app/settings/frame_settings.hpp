@@ -1,0 +1,41 @@
+#pragma once
+// The frame's choices as typed values, grouped by the module that reads them. Passes and techniques
+// receive these structs, never strings; the only place that turns text into them is settings.cpp,
+// whose declaration table also holds every default (so there are none here).
+#include <cstdint>
+
+namespace ppr::app {
+
+enum class PprFallback : uint32_t { Ssr, None };
+
+struct ViewSettings {        // owner: frame (composite, lighting, tonemap, shadow map)
+    uint32_t debug;          // gpu::kDebug* (settings/debug_views.hpp)
+    float exposure;
+    uint32_t shadowRes;
+};
+struct TileSettings {        // owner: tiles (tile classification, used by ppr and the ssr-* techniques)
+    bool indirect;           // dispatch over the tile lists (false: whole screen)
+};
+struct PprSettings {         // owner: ppr
+    bool holes, filter, antibleed;
+    bool tiles;              // per-tile reflector culling in the projection
+    PprFallback fallback;
+};
+struct SsrSettings {         // owner: ssr (the four ssr-* techniques and PPR's fallback)
+    float distance, thickness, thicknessScale;
+    uint32_t steps;
+};
+struct GlassSettings {       // owner: glass (PPR's glass atlas and the planar reference's)
+    bool enabled;
+    uint32_t atlas;          // texels per side
+};
+
+struct FrameSettings {
+    ViewSettings view;
+    TileSettings tiles;
+    PprSettings ppr;
+    SsrSettings ssr;
+    GlassSettings glass;
+};
+
+}  // namespace ppr::app

@@ -1,0 +1,195 @@
+#include "settings/settings.hpp"
+
+#include "common/frame.h"
+#include "settings/debug_views.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+
+namespace ppr::app {
+namespace {
+
+// A typed field of FrameSettings, as a captureless accessor (const access goes through const_cast).
+template <class T>
+using Field = T& (*)(FrameSettings&);
+
+template <class T>
+T& at(Field<T> field, const FrameSettings& s) {
+    return field(const_cast<FrameSettings&>(s));
+}
+
+// Shortest round-trip text: 0.05 stays "0.05", 4096 stays "4096" (float fields print as floats).
+template <class T>
+std::string shortest(T v) {
+    char buf[64];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    return std::string(buf, r.ptr);
+}
+
+SettingDecl toggle(std::string key, std::string owner, Field<bool> field, bool def, std::string help) {
+    SettingDecl d{std::move(key), SettingKind::Toggle, def ? "1" : "0", {"0", "1"}, 0, 0, std::move(owner), std::move(help)};
+    d.write = [field](FrameSettings& s, const std::string& v) { field(s) = v == "1"; };
+    d.read = [field](const FrameSettings& s) { return std::string(at(field, s) ? "1" : "0"); };
+    return d;
+}
+
+SettingDecl number(std::string key, std::string owner, Field<float> field, double def, double min, double max, std::string help) {
+    SettingDecl d{std::move(key), SettingKind::Number, shortest(def), {}, min, max, std::move(owner), std::move(help)};
+    d.write = [field](FrameSettings& s, const std::string& v) { field(s) = static_cast<float>(std::stod(v)); };
+    d.read = [field](const FrameSettings& s) { return shortest(at(field, s)); };
+    return d;
+}
+
+SettingDecl integer(std::string key, std::string owner, Field<uint32_t> field, uint32_t def, uint32_t min, uint32_t max, std::string help) {
+    SettingDecl d{std::move(key), SettingKind::Integer, std::to_string(def), {}, double(min), double(max), std::move(owner), std::move(help)};
+    d.write = [field](FrameSettings& s, const std::string& v) { field(s) = static_cast<uint32_t>(std::stod(v)); };
+    d.read = [field](const FrameSettings& s) { return std::to_string(at(field, s)); };
+    return d;
+}
+
+// A choice stored as an enum (or index) whose values are the positions in `names`.
+template <class E>
+SettingDecl choice(std::string key, std::string owner, Field<E> field, std::vector<std::string> names, std::string def, std::string help) {
+    SettingDecl d{std::move(key), SettingKind::Choice, std::move(def), names, 0, 0, std::move(owner), std::move(help)};
+    d.write = [field, names](FrameSettings& s, const std::string& v) {
+        field(s) = static_cast<E>(std::find(names.begin(), names.end(), v) - names.begin());
+    };
+    d.read = [field, names](const FrameSettings& s) { return names.at(static_cast<size_t>(at(field, s))); };
+    return d;
+}
+
+// debug: the names come from the debug-view table, the stored value is the shaders' constant.
+SettingDecl debugSetting() {
+    std::vector<std::string> names;
+    std::string help = "debug view:";
+    for (const DebugViewDecl& v : debugViews()) {
+        names.push_back(v.name);
+        if (v.value != gpu::kDebugNone) help += " " + v.name + " (" + v.help + ");";
+    }
+    help.pop_back();
+    SettingDecl d{"debug", SettingKind::Choice, "none", names, 0, 0, "frame", help};
+    d.write = [](FrameSettings& s, const std::string& v) {
+        for (const DebugViewDecl& view : debugViews())
+            if (view.name == v) s.view.debug = view.value;
+    };
+    d.read = [](const FrameSettings& s) { return debugView(s.view.debug).name; };
+    return d;
+}
+
+std::string join(const std::vector<std::string>& items, const char* sep) {
+    std::string out;
+    for (const std::string& s : items) out += (out.empty() ? "" : sep) + s;
+    return out;
+}
+
+std::string knownKeys() {
+    std::vector<std::string> keys;
+    for (const SettingDecl& d : settingDecls()) keys.push_back(d.key);
+    return join(keys, ", ");
+}
+
+// Throws naming the key, the value and what is accepted.
+void validate(const SettingDecl& d, const std::string& value) {
+    if (!d.choices.empty()) {
+        if (std::find(d.choices.begin(), d.choices.end(), value) == d.choices.end())
+            throw std::runtime_error("--set " + d.key + "=" + value + ": expected one of " + join(d.choices, "|"));
+        return;
+    }
+    size_t used = 0;
+    double v = 0.0;
+    try {
+        v = std::stod(value, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    const bool whole = d.kind != SettingKind::Integer || v == std::floor(v);
+    if (used == 0 || used != value.size() || !std::isfinite(v) || v < d.min || v > d.max || !whole)
+        throw std::runtime_error("--set " + d.key + "=" + value + ": expected " + (d.kind == SettingKind::Integer ? "a whole number" : "a number") +
+                                 " in [" + shortest(d.min) + ", " + shortest(d.max) + "]");
+}
+
+}  // namespace
+
+const std::vector<SettingDecl>& settingDecls() {
+    static const std::vector<SettingDecl> decls = {
+        debugSetting(),
+        toggle("holes", "ppr", [](FrameSettings& s) -> bool& { return s.ppr.holes; }, true, "PPR hole filling from the neighbour with the shortest offset"),
+        toggle("filter", "ppr", [](FrameSettings& s) -> bool& { return s.ppr.filter; }, true,
+               "PPR filtered (bilinear, encoded fractions) colour sample instead of point"),
+        toggle("antibleed", "ppr", [](FrameSettings& s) -> bool& { return s.ppr.antibleed; }, true,
+               "PPR colour-bleeding reduction (YCoCg, luma and chroma apart)"),
+        toggle("tiles", "ppr", [](FrameSettings& s) -> bool& { return s.ppr.tiles; }, true,
+               "PPR per-tile reflector culling in the projection pass (0: every reflector per pixel)"),
+        toggle("indirect", "tiles", [](FrameSettings& s) -> bool& { return s.tiles.indirect; }, true,
+               "PPR's reflection pass and the SSR techniques dispatched indirectly over the tile lists (0: whole screen)"),
+        choice<PprFallback>("fallback", "ppr", [](FrameSettings& s) -> PprFallback& { return s.ppr.fallback; }, {"ssr", "none"}, "ssr",
+                            "PPR: reflective pixels no reflector rectangle covers (curved, rough) get ssr-hiz over the non-planar tiles, or nothing"),
+        number("ssr_distance", "ssr", [](FrameSettings& s) -> float& { return s.ssr.distance; }, 40, 0.1, 1000.0,
+               "SSR: longest reflected ray, metres (all four SSR techniques and PPR's fallback)"),
+        number("ssr_thickness", "ssr", [](FrameSettings& s) -> float& { return s.ssr.thickness; }, 0.05, 0.001, 100.0,
+               "SSR: a surface is this many metres thick (plus ssr_thickness_scale x its distance)"),
+        number("ssr_thickness_scale", "ssr", [](FrameSettings& s) -> float& { return s.ssr.thicknessScale; }, 0.02, 0.0, 1.0,
+               "SSR: thickness added per metre of view distance"),
+        integer("ssr_steps", "ssr", [](FrameSettings& s) -> uint32_t& { return s.ssr.steps; }, 4096, 1, 65536,
+                "SSR: most march iterations per ray (the default never cuts a ray short on screen)"),
+        toggle("glass", "glass", [](FrameSettings& s) -> bool& { return s.glass.enabled; }, true,
+               "PPR reflections in glass panels, through the glass atlas (0: glass only transmits)"),
+        integer("glass_atlas", "glass", [](FrameSettings& s) -> uint32_t& { return s.glass.atlas; }, 1024, 64, 8192,
+                "texels per side of the glass atlas (PPR's intermediate buffer for glass panels)"),
+        number("exposure", "frame", [](FrameSettings& s) -> float& { return s.view.exposure; }, 1, 0.01, 100.0, "exposure multiplier before tonemapping"),
+        integer("shadowres", "frame", [](FrameSettings& s) -> uint32_t& { return s.view.shadowRes; }, 2048, 256, 8192,
+                "shadow map resolution (texels per side)"),
+    };
+    return decls;
+}
+
+const SettingDecl* findSetting(const std::string& key) {
+    for (const SettingDecl& d : settingDecls())
+        if (d.key == key) return &d;
+    return nullptr;
+}
+
+std::string settingsUsage() {
+    std::string out;
+    for (const SettingDecl& d : settingDecls()) {
+        const std::string values = d.choices.empty() ? "[" + shortest(d.min) + ", " + shortest(d.max) + "]" : join(d.choices, "|");
+        out += "    " + d.key + "=" + values + " (default " + d.defaultValue + "; " + d.owner + ")\n        " + d.help + "\n";
+    }
+    return out;
+}
+
+Settings::Settings() {
+    for (const SettingDecl& d : settingDecls()) d.write(values_, d.defaultValue);
+}
+
+void Settings::apply(const std::string& assignment) {
+    const size_t eq = assignment.find('=');
+    if (eq == std::string::npos || eq == 0)
+        throw std::runtime_error("--set " + assignment + ": expected key=value (known keys: " + knownKeys() + ")");
+    set(assignment.substr(0, eq), assignment.substr(eq + 1));
+}
+
+void Settings::set(const std::string& key, const std::string& value) {
+    const SettingDecl* d = findSetting(key);
+    if (!d) throw std::runtime_error("--set " + key + ": unknown key (known keys: " + knownKeys() + ")");
+    validate(*d, value);
+    d->write(values_, value);
+}
+
+std::string Settings::get(const std::string& key) const {
+    const SettingDecl* d = findSetting(key);
+    if (!d) throw std::logic_error("setting '" + key + "' is not declared");
+    return d->read(values_);
+}
+
+double Settings::number(const std::string& key) const { return std::stod(get(key)); }
+
+std::map<std::string, std::string> Settings::all() const {
+    std::map<std::string, std::string> out;
+    for (const SettingDecl& d : settingDecls()) out[d.key] = d.read(values_);
+    return out;
+}
+
+}  // namespace ppr::app

@@ -1,0 +1,98 @@
+#include "techniques/ppr_technique.hpp"
+
+#include "ppr_clear/ppr_clear_pass.hpp"
+#include "ppr_common/encoding.h"
+#include "ppr_reflect/ppr_reflect.h"
+#include "ssr_hiz/ssr_hiz_pass.hpp"
+#include "techniques/ssr_technique.hpp"
+
+namespace ppr::app {
+namespace {
+
+uint32_t resolveFlags(const PprSettings& s) {  // holes / filter / antibleed
+    uint32_t flags = 0;
+    if (s.holes) flags |= gpu::kPprHoleFilling;
+    if (s.filter) flags |= gpu::kPprFiltering;
+    if (s.antibleed) flags |= gpu::kPprAntiBleeding;
+    return flags;
+}
+
+}  // namespace
+
+PprTechnique::PprTechnique(FrameServices& s)
+    : project_(s.ctx), reflect_(s.ctx), bounds_(s.ctx), fallback_(passes::makeSsrHizPass(s.ctx)) {}
+
+std::string PprTechnique::unsupported(VkExtent2D extent) const {
+    // The intermediate encoding holds offsets up to 4095 px; larger frames render without PPR.
+    if (std::max(extent.width, extent.height) <= gpu::kPprMaxExtent) return {};
+    return "PPR is limited to " + std::to_string(gpu::kPprMaxExtent) + " px per side (12-bit offsets); rendering without reflections";
+}
+
+void PprTechnique::addGlass(TechniqueFrame& f, passes::PprProjectInputs& project, passes::GlassRegionBuffers& regions) const {
+    const FrameConstantsBuffer& constants = f.services.constants;
+    const uint32_t atlasSize = f.services.glass.pack(f.slot, f.settings.glass, f.services.reflectors, constants.main().viewProj,
+                                                     f.camera.position, f.in.extent);
+    regions = f.services.glass.upload(f.graph);  // the projection binds the table even without glass
+    project.glass = f.services.glass.stats(f.slot).has_value();
+    project.glassAtlas = passes::addPprClearPass(f.graph, "ppr.glass.atlas", {atlasSize, atlasSize}, "ppr.glass.clear");
+    project.glassRegions = regions.table;
+}
+
+std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f) {
+    const PprSettings& s = f.settings.ppr;
+    const passes::ReflectorBuffer& buffer = f.services.reflectors.buffer();
+    const uint32_t projected = buffer.projected();
+    const passes::ReflectorBinding binding{buffer.reflectors(f.slot), buffer.order(f.slot), buffer.planeLeaders(f.slot), projected,
+                                           buffer.cullPlaneCount()};
+    const passes::TileLists tiles = f.classifyTiles(projected);
+    passes::PprProjectInputs project;
+    project.depth = f.gbuffer.depth;
+    project.intermediate = passes::addPprClearPass(f.graph, "ppr.intermediate", f.in.extent);
+    project.bounds = bounds_.add(f.graph, f.in, binding.reflectors, projected);
+    project.stats = tiles.stats;
+    project.tilesX = tiles.tilesX;
+    project.tilesY = tiles.tilesY;
+    project.cullTiles = s.tiles;
+    passes::GlassRegionBuffers regions;
+    addGlass(f, project, regions);
+    const passes::PprProjectOutputs scatter = project_.add(f.graph, f.in, binding, project);
+    f.services.stats.markWritten(f.slot);
+    const std::optional<GlassStats>& glass = f.services.glass.stats(f.slot);
+    if (glass && glass->regions() > 0) {
+        passes::GlassReflectInputs resolve;
+        resolve.atlas = scatter.glassAtlas;
+        resolve.sceneColor = f.lit;
+        resolve.regions = regions.table;
+        resolve.regionList = regions.list;
+        resolve.regionCount = glass->regions();
+        resolve.atlasSize = glass->atlasSize;
+        resolve.usedHeight = glass->usedHeight();
+        resolve.flags = resolveFlags(s);
+        f.board.put(passes::GlassReflection{f.services.glassReflect.add(f.graph, f.in, resolve), regions.table});
+    }
+
+    passes::PprReflectInputs reflect;
+    reflect.intermediate = scatter.intermediate;
+    reflect.sceneColor = f.lit;
+    reflect.reflectorIds = f.gbuffer.reflector;
+    reflect.tileSurvivors = scatter.tileSurvivors;
+    reflect.tiles = &tiles;
+    reflect.debugView = f.settings.view.debug;
+    reflect.maxReflectorId = projected;
+    reflect.flags = resolveFlags(s);
+    if (f.settings.tiles.indirect) reflect.flags |= gpu::kPprIndirect;
+    graph::ImageHandle reflection = reflect_.add(f.graph, f.in, reflect);
+    // The debug views PPR draws over the whole screen are left as they are.
+    const uint32_t debug = reflect.debugView;
+    const bool pprDebugView = debug == gpu::kDebugIntermediate || debug == gpu::kDebugHoles || debug == gpu::kDebugTiles;
+    if (s.fallback == PprFallback::Ssr && !pprDebugView) {
+        passes::SsrInputs fallback = ssrInputs(f, tiles);
+        const passes::HizAtlas hiz = f.depthHierarchy();
+        fallback.hiz = hiz.image;
+        fallback.hizLevels = hiz.levels;
+        reflection = fallback_->addFallback(f.graph, f.in, fallback, reflection, "ppr.fallback");
+    }
+    return reflection;
+}
+
+}  // namespace ppr::app

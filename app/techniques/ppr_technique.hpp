@@ -1,0 +1,30 @@
+#pragma once
+// Pixel-projected reflections: classify tiles → clear → bounds → project (per-tile culling, glass
+// atlas) → reflect (indirect over reflector tiles) → [glass resolve] → [ssr-hiz fallback on the
+// non-planar tiles]. Reads PprSettings, TileSettings, SsrSettings (fallback) and GlassSettings.
+#include "frame/technique.hpp"
+#include "ppr_bounds/ppr_bounds_pass.hpp"
+#include "ppr_project/ppr_project_pass.hpp"
+#include "ppr_reflect/ppr_reflect_pass.hpp"
+#include "ssr_common/ssr_trace_pass.hpp"
+
+#include <memory>
+
+namespace ppr::app {
+
+class PprTechnique final : public Technique {
+public:
+    explicit PprTechnique(FrameServices& services);
+    std::optional<graph::ImageHandle> addReflection(TechniqueFrame& frame) override;
+    std::string unsupported(VkExtent2D extent) const override;
+    std::string warning(const FrameServices& services) const override { return services.reflectors.budgetWarning(); }
+
+private:
+    void addGlass(TechniqueFrame& f, passes::PprProjectInputs& project, passes::GlassRegionBuffers& regions) const;
+    passes::PprProjectPass project_;
+    passes::PprReflectPass reflect_;
+    passes::PprBoundsPass bounds_;
+    std::unique_ptr<passes::SsrTracePass> fallback_;  // ssr-hiz's pass, over the non-planar tiles
+};
+
+}  // namespace ppr::app

@@ -1,0 +1,31 @@
+#include "techniques/ssr_technique.hpp"
+
+namespace ppr::app {
+
+passes::SsrInputs ssrInputs(const TechniqueFrame& f, const passes::TileLists& tiles) {
+    passes::SsrInputs s;
+    s.gbuffer = &f.gbuffer;
+    s.sceneColor = f.lit;
+    s.reflectors = f.reflectorData();
+    s.tiles = &tiles;
+    s.params.maxDistance = f.settings.ssr.distance;
+    s.params.thickness = f.settings.ssr.thickness;
+    s.params.thicknessScale = f.settings.ssr.thicknessScale;
+    s.params.maxSteps = f.settings.ssr.steps;
+    s.indirect = f.settings.tiles.indirect;
+    return s;
+}
+
+std::optional<graph::ImageHandle> SsrTechnique::addReflection(TechniqueFrame& f) {
+    // Every reflector id makes a tile planar here: SSR has no reflector budget.
+    const passes::TileLists tiles = f.classifyTiles(UINT32_MAX);
+    passes::SsrInputs inputs = ssrInputs(f, tiles);
+    if (usesHierarchy_) {
+        const passes::HizAtlas hiz = f.depthHierarchy();
+        inputs.hiz = hiz.image;
+        inputs.hizLevels = hiz.levels;
+    }
+    return pass_->addTechnique(f.graph, f.in, inputs);
+}
+
+}  // namespace ppr::app

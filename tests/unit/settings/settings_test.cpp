@@ -1,0 +1,123 @@
+// Settings declared once: every key parses its default, round-trips its text, rejects what is out of
+// range with a message naming the key, and decodes into the typed FrameSettings the passes read.
+#include "common/frame.h"
+#include "settings/debug_views.hpp"
+#include "settings/settings.hpp"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+using namespace ppr::app;
+
+TEST(Settings, EveryDeclarationIsCompleteAndUnique) {
+    std::set<std::string> keys;
+    for (const SettingDecl& d : settingDecls()) {
+        EXPECT_TRUE(keys.insert(d.key).second) << "duplicate key " << d.key;
+        EXPECT_FALSE(d.help.empty()) << d.key;
+        EXPECT_FALSE(d.owner.empty()) << d.key;
+        EXPECT_TRUE(d.read && d.write) << d.key;
+        if (d.kind == SettingKind::Toggle) EXPECT_EQ(d.choices, (std::vector<std::string>{"0", "1"})) << d.key;
+        if (d.kind == SettingKind::Number || d.kind == SettingKind::Integer) EXPECT_LT(d.min, d.max) << d.key;
+    }
+    // The keys the DESIGN contract names.
+    for (const char* k : {"holes", "filter", "antibleed", "tiles", "indirect", "glass", "debug"}) EXPECT_TRUE(keys.count(k)) << k;
+}
+
+TEST(Settings, DefaultsReadBackAsDeclared) {
+    const Settings s;
+    for (const SettingDecl& d : settingDecls()) EXPECT_EQ(s.get(d.key), d.defaultValue) << d.key;
+    EXPECT_EQ(s.all().size(), settingDecls().size());
+}
+
+TEST(Settings, DecodesIntoTypedFields) {
+    Settings s;
+    const FrameSettings& v = s.values();
+    EXPECT_TRUE(v.ppr.holes && v.ppr.filter && v.ppr.antibleed && v.ppr.tiles && v.tiles.indirect && v.glass.enabled);
+    EXPECT_EQ(v.ppr.fallback, PprFallback::Ssr);
+    EXPECT_FLOAT_EQ(v.ssr.distance, 40.0f);
+    EXPECT_EQ(v.ssr.thickness, 0.05f);
+    EXPECT_EQ(v.ssr.steps, 4096u);
+    EXPECT_EQ(v.glass.atlas, 1024u);
+    EXPECT_EQ(v.view.shadowRes, 2048u);
+    EXPECT_EQ(v.view.debug, ppr::gpu::kDebugNone);
+    s.apply("holes=0");
+    s.apply("fallback=none");
+    s.apply("ssr_thickness=0.125");
+    s.apply("glass_atlas=256");
+    s.apply("debug=shadow");
+    EXPECT_FALSE(v.ppr.holes);
+    EXPECT_EQ(v.ppr.fallback, PprFallback::None);
+    EXPECT_EQ(v.ssr.thickness, 0.125f);
+    EXPECT_EQ(v.glass.atlas, 256u);
+    EXPECT_EQ(v.view.debug, ppr::gpu::kDebugShadow);
+    EXPECT_EQ(s.get("ssr_thickness"), "0.125");
+    EXPECT_EQ(s.get("debug"), "shadow");
+}
+
+TEST(Settings, FloatTextRoundTrips) {
+    Settings s;
+    s.set("exposure", "0.3");
+    EXPECT_EQ(s.get("exposure"), "0.3");  // printed as the float it is, not as a widened double
+    EXPECT_EQ(static_cast<float>(s.number("exposure")), 0.3f);
+}
+
+void expectRejected(const std::string& assignment, const std::string& fragment) {
+    Settings s;
+    const Settings before = s;
+    try {
+        s.apply(assignment);
+        FAIL() << assignment << " was accepted";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(s.all(), before.all()) << "a rejected value must change nothing";
+}
+
+TEST(Settings, RejectsBadValuesNamingKeyAndWhatIsAccepted) {
+    expectRejected("colour=red", "known keys: debug");
+    expectRejected("holes=2", "expected one of 0|1");
+    expectRejected("debug=sparkles", "expected one of none|albedo");
+    expectRejected("ssr_distance=nan", "ssr_distance=nan: expected a number in [0.1, 1000]");
+    expectRejected("ssr_distance=1e9", "expected a number");
+    expectRejected("ssr_steps=2.5", "ssr_steps=2.5: expected a whole number in [1, 65536]");
+    expectRejected("glass_atlas=", "expected a whole number");
+    expectRejected("exposure=1x", "expected a number");
+    expectRejected("novalue", "expected key=value");
+    expectRejected("=1", "expected key=value");
+}
+
+TEST(Settings, UsageListsEveryKeyWithItsDefaultAndOwner) {
+    const std::string usage = settingsUsage();
+    for (const SettingDecl& d : settingDecls())
+        EXPECT_NE(usage.find("    " + d.key + "="), std::string::npos) << d.key << "\n" << usage;
+    EXPECT_NE(usage.find("holes=0|1 (default 1; ppr)"), std::string::npos) << usage;
+    EXPECT_NE(usage.find("glass_atlas=[64, 8192] (default 1024; glass)"), std::string::npos) << usage;
+}
+
+TEST(DebugViews, EveryShaderConstantIsNamedOnce) {
+    std::set<uint32_t> values;
+    std::set<std::string> names;
+    for (const DebugViewDecl& v : debugViews()) {
+        EXPECT_TRUE(values.insert(v.value).second) << v.name;
+        EXPECT_TRUE(names.insert(v.name).second) << v.name;
+        EXPECT_LT(v.value, ppr::gpu::kDebugViewCount) << v.name;
+        EXPECT_FALSE(v.help.empty()) << v.name;
+    }
+    EXPECT_EQ(values.size(), ppr::gpu::kDebugViewCount);  // kDebugShadow included: every view is selectable
+    EXPECT_EQ(debugView(ppr::gpu::kDebugAtlas).name, "atlas");
+    EXPECT_THROW(debugView(ppr::gpu::kDebugViewCount), std::logic_error);
+}
+
+TEST(DebugViews, TheDebugSettingOffersExactlyTheTable) {
+    const SettingDecl* debug = findSetting("debug");
+    ASSERT_NE(debug, nullptr);
+    std::vector<std::string> names;
+    for (const DebugViewDecl& v : debugViews()) names.push_back(v.name);
+    EXPECT_EQ(debug->choices, names);
+    Settings s;
+    for (const DebugViewDecl& v : debugViews()) {
+        s.set("debug", v.name);
+        EXPECT_EQ(s.values().view.debug, v.value) << v.name;
+    }
+}
