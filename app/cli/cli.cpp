@@ -47,7 +47,7 @@ std::string usage() {
            ", its offsets are 12-bit)\n"
            "  --technique T        compare and bench: repeatable; one of\n" +
            techniquesUsage() +
-           "  --set key=value      repeatable (docs/settings.md); keys:\n" + settingsUsage() +
+           "  --set key=value      repeatable; keys (declared once: app/settings/settings.cpp):\n" + settingsUsage() +
            "  --frames N           frames to render (capture default 5: median GPU times over them; bench default 10)\n"
            "  --warmup N           bench: frames rendered before measuring (default 3)\n"
            "  --sweep S            bench, repeatable: techniques | reflectors | coverage (default: all three)\n"

@@ -62,14 +62,13 @@ SettingDecl choice(std::string key, std::string owner, Field<E> field, std::vect
 
 // debug: the names come from the debug-view table, the stored value is the shaders' constant.
 SettingDecl debugSetting() {
-    std::vector<std::string> names;
-    std::string help = "debug view:";
+    std::vector<std::string> names, help;
     for (const DebugViewDecl& v : debugViews()) {
         names.push_back(v.name);
-        if (v.value != gpu::kDebugNone) help += " " + v.name + " (" + v.help + ");";
+        help.push_back(v.help + " (" + v.owner + ")");
     }
-    help.pop_back();
-    SettingDecl d{"debug", SettingKind::Choice, "none", names, 0, 0, "frame", help};
+    SettingDecl d{"debug", SettingKind::Choice, "none", names, 0, 0, "frame", "debug view drawn over the frame"};
+    d.choiceHelp = help;
     d.write = [](FrameSettings& s, const std::string& v) {
         for (const DebugViewDecl& view : debugViews())
             if (view.name == v) s.view.debug = view.value;
@@ -156,6 +155,7 @@ std::string settingsUsage() {
     for (const SettingDecl& d : settingDecls()) {
         const std::string values = d.choices.empty() ? "[" + shortest(d.min) + ", " + shortest(d.max) + "]" : join(d.choices, "|");
         out += "    " + d.key + "=" + values + " (default " + d.defaultValue + "; " + d.owner + ")\n        " + d.help + "\n";
+        for (size_t i = 0; i < d.choiceHelp.size(); ++i) out += "          " + d.choices[i] + ": " + d.choiceHelp[i] + "\n";
     }
     return out;
 }

@@ -22,6 +22,7 @@ struct SettingDecl {
     double min = 0.0, max = 0.0;       // Number / Integer
     std::string owner;                 // the module that reads it (frame, tiles, ppr, ssr, glass)
     std::string help;
+    std::vector<std::string> choiceHelp;  // Choice: optional, one line per choice (debug views)
     // The typed field: text (already validated) in, canonical text out.
     std::function<void(FrameSettings&, const std::string&)> write;
     std::function<std::string(const FrameSettings&)> read;

@@ -230,7 +230,9 @@ void settingWidget(const SettingDecl& decl, PanelModel& m) {
             break;
         }
     }
-    helpTooltip(decl.kind == SettingKind::Number || decl.kind == SettingKind::Integer ? help + " (ctrl+click to type a value)" : help);
+    std::string tip = help;
+    for (size_t i = 0; i < decl.choiceHelp.size(); ++i) tip += "\n" + decl.choices[i] + ": " + decl.choiceHelp[i];
+    helpTooltip(decl.kind == SettingKind::Number || decl.kind == SettingKind::Integer ? tip + " (ctrl+click to type a value)" : tip);
 }
 
 }  // namespace
