@@ -3,7 +3,7 @@
 #include "bench/bench_report.hpp"
 #include "capture/report.hpp"
 #include "cli/scene_source.hpp"
-#include "compare/compare_metrics.hpp"
+#include "metrics/compare_metrics.hpp"
 #include "render/headless.hpp"
 #include "scene/stress_scene.hpp"
 #include "techniques/technique_table.hpp"

@@ -1,6 +1,6 @@
 #include "bench/bench_plot.hpp"
 
-#include "compare/contact_sheet.hpp"  // drawText, textWidth
+#include "metrics/contact_sheet.hpp"  // drawText, textWidth
 
 #include <algorithm>
 #include <cmath>

@@ -2,7 +2,7 @@
 
 #include "common/reflection.h"
 #include "capture/report.hpp"
-#include "compare/contact_sheet.hpp"
+#include "metrics/contact_sheet.hpp"
 #include "render/headless_session.hpp"
 
 #include <cstdio>

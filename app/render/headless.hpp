@@ -3,7 +3,7 @@
 // final image back and collects per-pass GPU timestamps. Used by `ppr capture`, compare, bench and the
 // GPU tests. It holds the caller's choices (technique, settings, A/B view) and hands them to every
 // frame's request by value.
-#include "compare/compare_metrics.hpp"
+#include "metrics/compare_metrics.hpp"
 #include "render/renderer.hpp"
 #include "render/taps.hpp"
 #include "util/image_io.hpp"

@@ -1,6 +1,6 @@
 // Scoring of a technique's reflection image against the planar reference: the mask, PSNR in display
 // space, coverage, the region variant, half-float readback and the error heat map.
-#include "compare/compare_metrics.hpp"
+#include "metrics/compare_metrics.hpp"
 
 #include "common/reflection.h"
 #include "tonemap/tonemap.h"

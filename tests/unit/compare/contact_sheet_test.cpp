@@ -1,5 +1,5 @@
 // Contact sheet layout (sizes, tile offsets, centring, label strips) and text drawing.
-#include "compare/contact_sheet.hpp"
+#include "metrics/contact_sheet.hpp"
 
 #include <gtest/gtest.h>
 

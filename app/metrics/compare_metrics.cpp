@@ -1,4 +1,4 @@
-#include "compare/compare_metrics.hpp"
+#include "metrics/compare_metrics.hpp"
 
 #include "common/heat_map.h"
 #include "common/reflection.h"

@@ -1,4 +1,4 @@
-#include "compare/contact_sheet.hpp"
+#include "metrics/contact_sheet.hpp"
 
 // stb_easy_font is header-only with static functions; this is its only includer.
 #include <stb_easy_font.h>
