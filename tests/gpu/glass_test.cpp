@@ -2,7 +2,7 @@
 // overlapping on screen keeping to their own regions, and atlas overflow, with validation +
 // synchronization validation on.
 #include "common/reflection.h"
-#include "compare/compare_metrics.hpp"
+#include "metrics/compare_metrics.hpp"
 #include "gpu_test_util.hpp"
 
 namespace ppr::test {

@@ -1,6 +1,6 @@
 // PPR against the planar ground truth on the default scene's named cameras, and PPR's invariants
 // (toggles, debug views), with validation + synchronization validation on.
-#include "compare/compare_metrics.hpp"
+#include "metrics/compare_metrics.hpp"
 #include "gpu_test_util.hpp"
 #include "scene/camera.hpp"
 

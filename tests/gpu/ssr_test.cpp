@@ -1,7 +1,7 @@
 // The screen-space ray-marched baselines against the planar ground truth on every named camera of the
 // default scene, and against each other, with validation + synchronization validation on.
 #include "common/reflection.h"
-#include "compare/compare_metrics.hpp"
+#include "metrics/compare_metrics.hpp"
 #include "gpu_test_util.hpp"
 #include "tonemap/tonemap.h"
 
