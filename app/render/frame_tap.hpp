@@ -24,7 +24,8 @@ struct TapContext {
     graph::Blackboard& board;
     const passes::FrameInputs& in;
     const std::string& technique;  // the one this frame renders
-    // The reference technique's reflection of this frame (the planar ground truth), added on first call.
+    const std::string& referenceName;  // the ground truth reference() renders (FrameRequest::reference)
+    // The reference technique's reflection of this frame, added on first call.
     std::function<std::optional<graph::ImageHandle>()> reference;
 };
 

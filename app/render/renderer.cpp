@@ -118,8 +118,9 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
         }
     }
     std::optional<graph::ImageHandle> reference;
-    TapContext taps{g, board, in, req.technique, [&]() -> std::optional<graph::ImageHandle> {
-                        if (!reference) reference = module("planar")->addReference(frame);
+    TapContext taps{g, board, in, req.technique, req.reference, [&]() -> std::optional<graph::ImageHandle> {
+                        Technique* truth = module(req.reference);
+                        if (!reference && truth) reference = truth->addReference(frame);
                         return reference;
                     }};
     runTaps(req, TapPoint::AfterReflection, taps);

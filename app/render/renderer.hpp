@@ -23,6 +23,7 @@ struct FrameRequest {
     scene::CameraPose camera;
     VkExtent2D extent{};
     std::string technique = "none";  // a techniqueTable() name
+    std::string reference = "planar";  // the ground truth taps compare with (a reference row of the table)
     FrameSettings settings = Settings().values();
     graph::ExternalImage* target = nullptr;  // tonemapped output (swapchain image) or null → transient
     std::vector<FrameTap> taps;

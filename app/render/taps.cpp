@@ -51,7 +51,7 @@ FrameTap readbackTap(ReadbackSource source, graph::ExternalBuffer* buffer, bool*
 void AbCompareTaps::attach(std::vector<FrameTap>& taps, AbView view, float split) const {
     if (view == AbView::Off) return;
     auto reference = [](TapContext& t) -> std::optional<graph::ImageHandle> {
-        if (t.technique == "planar" || !t.board.has<TechniqueReflection>()) return std::nullopt;
+        if (t.technique == t.referenceName || !t.board.has<TechniqueReflection>()) return std::nullopt;
         return t.reference();
     };
     if (view == AbView::Split) {

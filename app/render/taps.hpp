@@ -20,14 +20,14 @@ enum class ReadbackSource {
 // Copies the source into `buffer` at the end of the frame; `*copied` says whether the frame had it.
 FrameTap readbackTap(ReadbackSource source, graph::ExternalBuffer* buffer, bool* copied = nullptr);
 
-// The viewer's A/B comparison of the frame's technique with the planar ground truth.
+// The viewer's A/B comparison of the frame's technique with the ground truth (FrameRequest::reference).
 enum class AbView { Off, Split, ErrorHeat };
 
 class AbCompareTaps {
 public:
     explicit AbCompareTaps(const vk::Context& ctx) : pass_(ctx) {}
     // Split: the technique's reflection left of `split` (a fraction of the width), the reference's right.
-    // ErrorHeat: the technique's reflection error over the frame. Nothing for planar, none, or Off.
+    // ErrorHeat: the technique's reflection error over the frame. Nothing for the reference itself, none, or Off.
     void attach(std::vector<FrameTap>& taps, AbView view, float split) const;
 
 private:

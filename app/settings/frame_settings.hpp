@@ -7,11 +7,15 @@
 namespace ppr::app {
 
 enum class PprFallback : uint32_t { Ssr, None };
+enum class NormalMap : uint32_t { Off, Approx, Raymarch };
 
 struct ViewSettings {        // owner: frame (composite, lighting, tonemap, shadow map)
     uint32_t debug;          // gpu::kDebug* (settings/debug_views.hpp)
     float exposure;
     uint32_t shadowRes;
+};
+struct EnvSettings {         // owner: env (every technique's misses)
+    bool fallback;           // misses and screen edges fall back to the sky
 };
 struct TileSettings {        // owner: tiles (tile classification, used by ppr and the ssr-* techniques)
     bool indirect;           // dispatch over the tile lists (false: whole screen)
@@ -20,6 +24,7 @@ struct PprSettings {         // owner: ppr
     bool holes, filter, antibleed;
     bool tiles;              // per-tile reflector culling in the projection
     PprFallback fallback;
+    NormalMap normalMap;     // the bonus slides' normal-map approximation in the reflection pass
 };
 struct SsrSettings {         // owner: ssr (the four ssr-* techniques and PPR's fallback)
     float distance, thickness, thicknessScale;
@@ -36,6 +41,7 @@ struct FrameSettings {
     PprSettings ppr;
     SsrSettings ssr;
     GlassSettings glass;
+    EnvSettings env;
 };
 
 }  // namespace ppr::app
