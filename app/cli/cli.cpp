@@ -31,6 +31,13 @@ const std::vector<std::string>& benchSweepNames() {
     return names;
 }
 
+static std::string referenceNames() {
+    std::string list;
+    for (const TechniqueDesc& t : techniqueTable())
+        if (t.reference) list += (list.empty() ? "" : "|") + t.name;
+    return list;
+}
+
 std::string usage() {
     return "usage: ppr [view|capture|compare|bench] [options]\n"
            "  view                 interactive window (default when a display is present)\n"
@@ -47,6 +54,8 @@ std::string usage() {
            ", its offsets are 12-bit)\n"
            "  --technique T        compare and bench: repeatable; one of\n" +
            techniquesUsage() +
+           "  --reference R        compare: what the techniques are scored against, one of " + referenceNames() +
+           " (default planar)\n"
            "  --set key=value      repeatable; keys (declared once: app/settings/settings.cpp):\n" + settingsUsage() +
            "  --frames N           frames to render (capture default 5: median GPU times over them; bench default 10)\n"
            "  --warmup N           bench: frames rendered before measuring (default 3)\n"
@@ -90,6 +99,16 @@ Options parseCommandLine(int argc, const char* const* argv) {
             if (std::find(names.begin(), names.end(), sweep) == names.end())
                 throw std::runtime_error("--sweep " + sweep + ": expected techniques, reflectors or coverage");
             o.sweeps.push_back(sweep);
+        }
+        else if (a == "--reference") {
+            o.reference = value(a);
+            const TechniqueDesc* t = findTechnique(o.reference);
+            if (!t || !t->reference) {
+                std::string list;
+                for (const TechniqueDesc& r : techniqueTable())
+                    if (r.reference) list += (list.empty() ? "" : ", ") + r.name;
+                throw std::runtime_error("--reference " + o.reference + ": not a reference technique (available: " + list + ")");
+            }
         }
         else if (a == "--technique") {
             o.technique = value(a);

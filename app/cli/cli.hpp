@@ -20,6 +20,7 @@ struct Options {
     uint32_t width = 1280, height = 720;
     std::string technique = "ppr";        // capture / view: the last --technique given
     std::vector<std::string> techniques;  // compare: every --technique given, in order (default: ppr)
+    std::string reference = "planar";     // compare: what techniques are scored against (a reference technique)
     std::vector<std::string> sets;  // validated "key=value" assignments, in order
     uint32_t frames = 0;            // 0 = mode default
     std::string out = "out";

@@ -68,6 +68,16 @@ FloatImage floatImageFromHalf(const void* rgba16f, uint32_t width, uint32_t heig
     return img;
 }
 
+FloatImage allReflectorPixels(const FloatImage& reference) {
+    checkImage(reference, "reference");
+    FloatImage all = reference;
+    for (size_t i = 0; i < pixelCount(all); ++i) {
+        float& a = all.rgba[i * 4 + 3];
+        a = a == gpu::kReflectionHit || a == gpu::kReflectionOffscreen ? gpu::kReflectionHit : gpu::kReflectionNone;
+    }
+    return all;
+}
+
 ReflectionScore scoreReflection(const FloatImage& technique, const FloatImage& reference, float exposure,
                                 const PixelRect& region) {
     checkSameSize(technique, reference);

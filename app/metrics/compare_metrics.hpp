@@ -44,6 +44,13 @@ constexpr double kPsnrCapDb = 100.0;
 // Throws std::invalid_argument when the sizes differ or an image's rgba has the wrong length.
 ReflectionScore scoreReflection(const FloatImage& technique, const FloatImage& reference, float exposure);
 
+// The reference with every reflector pixel it has a reflection for marked kReflectionHit — those whose
+// reflected point is on screen and those where it is off screen or hidden (kReflectionOffscreen) —
+// so scoreReflection and compositedPsnrDb over it give the "all reflector pixels" figures
+// (psnr_db_all, coverage_all: what the user sees, not only what the screen holds). Second bounces
+// (kReflectionSecondary) stay out, as in the primary figure. Throws as scoreReflection.
+FloatImage allReflectorPixels(const FloatImage& reference);
+
 // Glass panels are scored in their reflection atlas (glass_reflect/glass_regions.hpp), texel by texel,
 // with scoreReflection over the texels the reference marks kReflectionHit. For the composited score
 // the screen pixels those texels stand for are needed: this returns a screen-sized image whose alpha

@@ -16,6 +16,8 @@ using ppr::gpu::kReflectionFilled;
 using ppr::gpu::kReflectionHit;
 using ppr::gpu::kReflectionNone;
 using ppr::gpu::kReflectionOffscreen;
+using ppr::gpu::kReflectionSecondary;
+using ppr::gpu::kReflectionOffscreen;
 
 namespace {
 
@@ -266,4 +268,26 @@ TEST(CompareMetrics, HeatMapRampIsMonotonic) {
     EXPECT_GT(third[0], 0);
     EXPECT_EQ(third[1], 0);
     EXPECT_EQ(third[2], 0);
+}
+
+TEST(CompareMetrics, AllReflectorPixelsAddsTheOffscreenOnesAndKeepsSecondBouncesOut) {
+    // One pixel of each kind in the reference; the technique reflects only the on-screen one.
+    FloatImage ref = makeImage(4, 1, {0.5f, 0.5f, 0.5f}, kReflectionNone);
+    setPixel(ref, 0, 0, {0.5f, 0.5f, 0.5f}, kReflectionHit);
+    setPixel(ref, 1, 0, {0.5f, 0.5f, 0.5f}, kReflectionOffscreen);
+    setPixel(ref, 2, 0, {0.5f, 0.5f, 0.5f}, kReflectionSecondary);
+    FloatImage tech = makeImage(4, 1, {0, 0, 0}, kReflectionNone);
+    setPixel(tech, 0, 0, {0.5f, 0.5f, 0.5f}, kReflectionHit);
+
+    const ReflectionScore screen = scoreReflection(tech, ref, kExposure);
+    EXPECT_EQ(screen.maskPixels, 1u);
+    EXPECT_EQ(screen.psnrDb, kPsnrCapDb);
+
+    const FloatImage all = allReflectorPixels(ref);
+    const ReflectionScore everything = scoreReflection(tech, all, kExposure);
+    EXPECT_EQ(everything.maskPixels, 2u);  // the hit and the off-screen pixel, not the second bounce
+    EXPECT_EQ(everything.coverage, 0.5);
+    EXPECT_NEAR(everything.mse, expectedMse({0, 0, 0}, {0.5f, 0.5f, 0.5f}) / 2.0, 1e-12);
+    EXPECT_EQ(all.rgba[3 * 4 + 3], kReflectionNone);
+    EXPECT_EQ(all.rgba[0], ref.rgba[0]);  // colours untouched
 }
