@@ -1,5 +1,8 @@
 #include "shader/pipeline.hpp"
 
+#include "shader/layout_check.hpp"
+#include "shader/spirv_reflect.hpp"
+
 #include <stdexcept>
 #include <utility>
 
@@ -16,11 +19,15 @@ VkShaderModule createModule(const vk::Context& ctx, Spirv s, const std::string& 
     return m;
 }
 
-void createLayout(const vk::Context& ctx, const PipelineLayoutDesc& desc, const std::string& name,
+ReflectedLayout reflect(Spirv s, const std::string& what) {
+    if (s.bytes % sizeof(uint32_t) != 0) throw std::runtime_error("SPIR-V of " + what + " is not a whole number of words");
+    return reflectSpirv({s.code, s.bytes / sizeof(uint32_t)}, what);
+}
+
+void createLayout(const vk::Context& ctx, const PipelineLayoutDesc& desc, std::span<const VkDescriptorType> set0, const std::string& name,
                   VkDescriptorSetLayout& setLayout, VkPipelineLayout& layout) {
     std::vector<VkDescriptorSetLayoutBinding> bindings;
-    for (uint32_t i = 0; i < desc.pushBindings.size(); ++i)
-        bindings.push_back({i, desc.pushBindings[i], 1, desc.stages, nullptr});
+    for (uint32_t i = 0; i < set0.size(); ++i) bindings.push_back({i, set0[i], 1, desc.stages, nullptr});
     VkDescriptorSetLayoutCreateInfo sci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     sci.flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR;
     sci.bindingCount = static_cast<uint32_t>(bindings.size());
@@ -56,6 +63,8 @@ Pipeline& Pipeline::operator=(Pipeline&& o) noexcept {
         bindPoint_ = o.bindPoint_;
         pushBytes_ = o.pushBytes_;
         stages_ = o.stages_;
+        name_ = std::move(o.name_);
+        bindings_ = std::move(o.bindings_);
     }
     return *this;
 }
@@ -72,7 +81,7 @@ void Pipeline::reset() {
 }
 
 void Pipeline::pushConstants(VkCommandBuffer cmd, const void* data, uint32_t bytes) const {
-    if (bytes > pushBytes_) throw std::logic_error("push constants larger than the pipeline layout declares");
+    if (bytes > pushBytes_) throw std::logic_error("pipeline '" + name_ + "': push constants larger than the pipeline layout declares");
     vkCmdPushConstants(cmd, layout_, stages_, 0, bytes, data);
 }
 
@@ -84,7 +93,9 @@ Pipeline createComputePipeline(const vk::Context& ctx, Spirv spirv, const Pipeli
     d.stages = VK_SHADER_STAGE_COMPUTE_BIT;
     p.stages_ = d.stages;
     p.pushBytes_ = d.pushConstantBytes;
-    createLayout(ctx, d, name, p.pushSetLayout_, p.layout_);
+    p.name_ = name;
+    p.bindings_ = pushSetTypes(reflect(spirv, name + ".comp"), d.pushConstantBytes, d.extraSets.size(), name);
+    createLayout(ctx, d, p.bindings_, name, p.pushSetLayout_, p.layout_);
     VkShaderModule module = createModule(ctx, spirv, name);
     VkComputePipelineCreateInfo ci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     ci.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_COMPUTE_BIT, module, "main", nullptr};
@@ -117,7 +128,11 @@ Pipeline GraphicsPipelineBuilder::build() {
     if (layout_.stages == VK_SHADER_STAGE_COMPUTE_BIT) layout_.stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     p.stages_ = layout_.stages;
     p.pushBytes_ = layout_.pushConstantBytes;
-    createLayout(ctx_, layout_, name_, p.pushSetLayout_, p.layout_);
+    ReflectedLayout reflected = reflect(vert_, name_ + ".vert");
+    if (hasFrag_) mergeStage(reflected, reflect(frag_, name_ + ".frag"), "pipeline '" + name_ + "'");
+    p.name_ = name_;
+    p.bindings_ = pushSetTypes(reflected, layout_.pushConstantBytes, layout_.extraSets.size(), name_);
+    createLayout(ctx_, layout_, p.bindings_, name_, p.pushSetLayout_, p.layout_);
 
     VkShaderModule vs = createModule(ctx_, vert_, name_ + ".vert");
     VkShaderModule fs = hasFrag_ ? createModule(ctx_, frag_, name_ + ".frag") : VK_NULL_HANDLE;
@@ -245,8 +260,11 @@ PushDescriptors& PushDescriptors::uniformBuffer(VkBuffer buffer, VkDeviceSize of
 }
 
 void PushDescriptors::push(VkCommandBuffer cmd, const Pipeline& pipeline) {
-    fn_(cmd, pipeline.bindPoint(), pipeline.layout(), 0, count_, writes_);
-    count_ = 0;
+    VkDescriptorType given[kMax];
+    for (uint32_t i = 0; i < count_; ++i) given[i] = writes_[i].descriptorType;
+    const uint32_t count = std::exchange(count_, 0u);  // reusable even after a failed check
+    checkBindings(pipeline.name(), {}, pipeline.bindingTypes(), {given, count});
+    fn_(cmd, pipeline.bindPoint(), pipeline.layout(), 0, count, writes_);
 }
 
 void Samplers::create(const vk::Context& ctx) {

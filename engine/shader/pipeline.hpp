@@ -1,6 +1,7 @@
 #pragma once
 // Pipelines from embedded SPIR-V (compiled at build time, see cmake/Shaders.cmake). Resources of a
-// pass are bound with push descriptors (set 0), so no descriptor set is allocated per frame.
+// pass are bound with push descriptors (set 0), so no descriptor set is allocated per frame. Set 0's
+// layout is read from the SPIR-V (spirv_reflect.hpp): the GLSL is the only place a pass declares it.
 #include "vk/context.hpp"
 
 #include <cstdint>
@@ -16,9 +17,9 @@ struct Spirv {
 };
 #define PPR_SPIRV(var) ::ppr::shader::Spirv{var, sizeof(var)}
 
-// Set 0 layout: one push-descriptor binding per entry, visible to `stages`.
+// What the SPIR-V does not say. Set 0 (push descriptors, visible to `stages`) comes from reflection;
+// a push-constant block in the shaders must be exactly `pushConstantBytes` (the shared header's sizeof).
 struct PipelineLayoutDesc {
-    std::vector<VkDescriptorType> pushBindings;
     VkShaderStageFlags stages = VK_SHADER_STAGE_COMPUTE_BIT;
     uint32_t pushConstantBytes = 0;
     std::vector<VkDescriptorSetLayout> extraSets;  // sets 1.. (e.g. the scene's bindless textures)
@@ -38,6 +39,9 @@ public:
     VkPipelineBindPoint bindPoint() const { return bindPoint_; }
     uint32_t pushConstantBytes() const { return pushBytes_; }
     VkShaderStageFlags stages() const { return stages_; }
+    const std::string& name() const { return name_; }
+    // Set 0's descriptor types in binding order (from the shaders), which binding calls must match.
+    std::span<const VkDescriptorType> bindingTypes() const { return bindings_; }
 
     void bind(VkCommandBuffer cmd) const { vkCmdBindPipeline(cmd, bindPoint_, pipeline_); }
     void pushConstants(VkCommandBuffer cmd, const void* data, uint32_t bytes) const;
@@ -55,6 +59,8 @@ private:
     VkPipelineBindPoint bindPoint_ = VK_PIPELINE_BIND_POINT_COMPUTE;
     uint32_t pushBytes_ = 0;
     VkShaderStageFlags stages_ = 0;
+    std::string name_;
+    std::vector<VkDescriptorType> bindings_;
 };
 
 Pipeline createComputePipeline(const vk::Context& ctx, Spirv spirv, const PipelineLayoutDesc& layout, const std::string& name);
@@ -96,7 +102,8 @@ private:
 };
 
 // Collects descriptor writes for set 0 and pushes them with vkCmdPushDescriptorSetKHR.
-// Bindings are numbered in call order, matching PipelineLayoutDesc::pushBindings.
+// Bindings are numbered in call order; push() throws std::logic_error unless their number and types
+// match the pipeline's set 0 (Pipeline::bindingTypes).
 class PushDescriptors {
 public:
     explicit PushDescriptors(const vk::Context& ctx);

@@ -8,8 +8,6 @@ namespace ppr::passes {
 
 AbComparePass::AbComparePass(const vk::Context& ctx) : ctx_(ctx) {
     shader::PipelineLayoutDesc layout;
-    layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                           VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
     layout.pushConstantBytes = sizeof(gpu::AbComparePush);
     pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(ab_compare_comp), layout, "ab");
 }

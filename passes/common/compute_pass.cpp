@@ -1,5 +1,7 @@
 #include "common/compute_pass.hpp"
 
+#include "shader/layout_check.hpp"
+
 #include <algorithm>
 #include <utility>
 
@@ -65,7 +67,22 @@ void ComputePass::dispatch(VkExtent2D extent, uint32_t groupSize) { add(extent, 
 
 void ComputePass::dispatchIndirect(graph::BufferHandle args, VkDeviceSize offset) { add({}, 0, args, offset); }
 
+VkDescriptorType ComputePass::descriptorType(Kind kind) {
+    switch (kind) {
+        case Kind::Uniform: return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+        case Kind::Sampled: return VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+        case Kind::StorageImage: return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+        case Kind::HostStorage:
+        case Kind::StorageBuffer: break;
+    }
+    return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+}
+
 void ComputePass::add(VkExtent2D extent, uint32_t groupSize, std::optional<graph::BufferHandle> indirect, VkDeviceSize indirectOffset) {
+    // Checked where the pass is declared, so the error points at the builder calls, not at recording.
+    std::vector<VkDescriptorType> given;
+    for (const Binding& b : bindings_) given.push_back(descriptorType(b.kind));
+    shader::checkBindings(pipeline_.name(), name_, pipeline_.bindingTypes(), given);
     struct Data {
         std::vector<Binding> bindings;  // handles as declared (the versions this pass uses)
         std::optional<graph::BufferHandle> indirect;

@@ -8,8 +8,9 @@
 //       .storageWrite(color, &out)
 //       .dispatch(extent, 8);
 //
-// Each call declares the graph access and the push-descriptor binding, numbered in call order (so it
-// must match the shader's bindings and the pipeline's PipelineLayoutDesc::pushBindings).
+// Each call declares the graph access and the push-descriptor binding, numbered in call order. The
+// order must match the shader's `layout(set = 0, binding = N)` lines: dispatch() throws
+// std::logic_error naming the pass and the first binding whose type differs (or the missing one).
 #include "graph/graph.hpp"
 #include "shader/pipeline.hpp"
 
@@ -57,6 +58,7 @@ private:
         VkDeviceSize offset = 0, range = 0;
         VkSampler sampler = VK_NULL_HANDLE;
     };
+    static VkDescriptorType descriptorType(Kind kind);
     ComputePass& bind(Kind kind, graph::Access access, graph::ImageHandle image, graph::BufferHandle buffer);
     void add(VkExtent2D extent, uint32_t groupSize, std::optional<graph::BufferHandle> indirect, VkDeviceSize indirectOffset);
 

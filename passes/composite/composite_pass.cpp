@@ -10,14 +10,8 @@
 namespace ppr::passes {
 
 CompositePass::CompositePass(const vk::Context& ctx) : ctx_(ctx) {
-    shader::PipelineLayoutDesc layout;
-    layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER};
-    for (int i = 0; i < 6; ++i) layout.pushBindings.push_back(VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
-    layout.pushBindings.push_back(VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);
-    plain_ = shader::createComputePipeline(ctx, PPR_SPIRV(composite_comp), layout, "composite");
-    layout.pushBindings.push_back(VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
-    layout.pushBindings.push_back(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
-    withReflection_ = shader::createComputePipeline(ctx, PPR_SPIRV(composite_reflect_comp), layout, "composite (reflection)");
+    plain_ = shader::createComputePipeline(ctx, PPR_SPIRV(composite_comp), {}, "composite");
+    withReflection_ = shader::createComputePipeline(ctx, PPR_SPIRV(composite_reflect_comp), {}, "composite (reflection)");
 }
 
 graph::ImageHandle CompositePass::add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::ImageHandle sceneColor,

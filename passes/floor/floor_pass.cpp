@@ -6,10 +6,7 @@
 namespace ppr::passes {
 
 FloorPass::FloorPass(const vk::Context& ctx) : ctx_(ctx) {
-    shader::PipelineLayoutDesc layout;
-    layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                           VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
-    pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(floor_comp), layout, "floor");
+    pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(floor_comp), {}, "floor");
 }
 
 graph::ImageHandle FloorPass::add(graph::RenderGraph& g, const FrameInputs& in, graph::ImageHandle depth, graph::ImageHandle sceneColor) const {

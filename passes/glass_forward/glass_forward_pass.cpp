@@ -12,14 +12,8 @@
 namespace ppr::passes {
 
 GlassForwardPass::GlassForwardPass(const vk::Context& ctx, const gpu::GpuScene& scene) : ctx_(ctx) {
-    auto build = [&](shader::Spirv frag, bool reflection, const char* name) {
+    auto build = [&](shader::Spirv frag, const char* name) {
         shader::PipelineLayoutDesc layout;
-        layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                               VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
-        if (reflection) {
-            layout.pushBindings.push_back(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
-            layout.pushBindings.push_back(VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
-        }
         layout.stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
         layout.pushConstantBytes = sizeof(gpu::GlassForwardPush);
         layout.extraSets = {scene.textureSetLayout()};
@@ -33,8 +27,8 @@ GlassForwardPass::GlassForwardPass(const vk::Context& ctx, const gpu::GpuScene& 
             .addAndFilterBlend()
             .build();
     };
-    plain_ = build(PPR_SPIRV(glass_forward_frag), false, "glass");
-    withReflection_ = build(PPR_SPIRV(glass_forward_reflect_frag), true, "glass (reflection)");
+    plain_ = build(PPR_SPIRV(glass_forward_frag), "glass");
+    withReflection_ = build(PPR_SPIRV(glass_forward_reflect_frag), "glass (reflection)");
 }
 
 void GlassForwardPass::sortBackToFront(const gpu::GpuScene& scene, const glm::vec3& eye, std::vector<uint32_t>& order) {

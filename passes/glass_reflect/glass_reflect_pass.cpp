@@ -10,15 +10,9 @@ namespace ppr::passes {
 
 GlassReflectPass::GlassReflectPass(const vk::Context& ctx) : ctx_(ctx) {
     shader::PipelineLayoutDesc layout;
-    layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,         VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
-                           VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                           VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,         VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                           VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
     layout.pushConstantBytes = sizeof(gpu::GlassReflectPush);
     pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(glass_reflect_comp), layout, "ppr.glass.reflect");
-    shader::PipelineLayoutDesc viewLayout;
-    viewLayout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
-    view_ = shader::createComputePipeline(ctx, PPR_SPIRV(glass_atlas_view_comp), viewLayout, "glass.atlas_view");
+    view_ = shader::createComputePipeline(ctx, PPR_SPIRV(glass_atlas_view_comp), {}, "glass.atlas_view");
 }
 
 graph::ImageHandle GlassReflectPass::addAtlasView(graph::RenderGraph& g, const FrameInputs& in, graph::ImageHandle reflectionAtlas,

@@ -8,12 +8,7 @@
 namespace ppr::passes {
 
 LightingPass::LightingPass(const vk::Context& ctx) : ctx_(ctx) {
-    shader::PipelineLayoutDesc layout;
-    layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,         VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                           VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                           VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                           VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
-    pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(lighting_comp), layout, "lighting");
+    pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(lighting_comp), {}, "lighting");
 }
 
 graph::ImageHandle LightingPass::add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::ImageHandle shadowMap,

@@ -13,20 +13,9 @@ namespace ppr::passes {
 PlanarPass::PlanarPass(const vk::Context& ctx, const GBufferPass& gbuffer, const LightingPass& lighting)
     : ctx_(ctx), gbuffer_(gbuffer), lighting_(lighting) {
     shader::PipelineLayoutDesc layout;
-    layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,         VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
-                           VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                           VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                           VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                           VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,         VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
     layout.pushConstantBytes = sizeof(gpu::PlanarResolvePush);
     resolve_ = shader::createComputePipeline(ctx, PPR_SPIRV(planar_resolve_comp), layout, "planar.resolve");
     shader::PipelineLayoutDesc glassLayout;
-    glassLayout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,         VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
-                                VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                                VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,         VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                                VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
     glassLayout.pushConstantBytes = sizeof(gpu::PlanarGlassPush);
     glassResolve_ = shader::createComputePipeline(ctx, PPR_SPIRV(planar_glass_resolve_comp), glassLayout, "planar.glass");
 }

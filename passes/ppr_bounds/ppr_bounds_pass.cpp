@@ -11,7 +11,6 @@ namespace ppr::passes {
 
 PprBoundsPass::PprBoundsPass(const vk::Context& ctx) : ctx_(ctx) {
     shader::PipelineLayoutDesc layout;
-    layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
     layout.pushConstantBytes = sizeof(gpu::PprBoundsPush);
     pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(ppr_bounds_comp), layout, "ppr.bounds");
 }

@@ -12,10 +12,6 @@ static_assert(gpu::kPprCullMinHeight < gpu::kPprAboveEpsilon, "culling must keep
 
 PprProjectPass::PprProjectPass(const vk::Context& ctx) : ctx_(ctx) {
     shader::PipelineLayoutDesc layout;
-    layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                           VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,          VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                           VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                           VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,  VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
     layout.pushConstantBytes = sizeof(gpu::PprProjectPush);
     pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(ppr_project_comp), layout, "ppr.project");
 }

@@ -7,7 +7,6 @@ namespace ppr::passes {
 
 ShadowPass::ShadowPass(const vk::Context& ctx) : ctx_(ctx) {
     shader::PipelineLayoutDesc layout;
-    layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
     layout.stages = VK_SHADER_STAGE_VERTEX_BIT;
     layout.pushConstantBytes = sizeof(gpu::DrawPush);
     pipeline_ = shader::GraphicsPipelineBuilder(ctx, "shadow")

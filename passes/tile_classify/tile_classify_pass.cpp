@@ -12,9 +12,6 @@ namespace ppr::passes {
 
 TileClassifyPass::TileClassifyPass(const vk::Context& ctx) : ctx_(ctx) {
     shader::PipelineLayoutDesc layout;
-    layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                           VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                           VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
     layout.pushConstantBytes = sizeof(gpu::TileClassifyPush);
     pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(tile_classify_comp), layout, "tiles.classify");
 }

@@ -10,7 +10,6 @@ namespace ppr::passes {
 void TonemapPass::prepare(VkFormat format) {
     if (pipelines_.count(format)) return;
     shader::PipelineLayoutDesc layout;
-    layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER};
     layout.stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     pipelines_.emplace(format, shader::GraphicsPipelineBuilder(ctx_, "tonemap")
                                    .vertex(PPR_SPIRV(fullscreen_vert))
