@@ -125,10 +125,11 @@ const std::vector<SettingDecl>& settingDecls() {
                "PPR's reflection pass and the SSR techniques dispatched indirectly over the tile lists (0: whole screen)"),
         choice<PprFallback>("fallback", "ppr", [](FrameSettings& s) -> PprFallback& { return s.ppr.fallback; }, {"ssr", "none"}, "ssr",
                             "PPR: reflective pixels no reflector rectangle covers (curved, rough) get ssr-hiz over the non-planar tiles, or nothing"),
-        choice<NormalMap>("normalmap", "ppr", [](FrameSettings& s) -> NormalMap& { return s.ppr.normalMap; }, {"off", "approx", "raymarch"},
+        choice<NormalMap>("normalmap", "ppr, ssr, raytraced", [](FrameSettings& s) -> NormalMap& { return s.ppr.normalMap; }, {"off", "approx", "raymarch"},
                           "off",
-                          "PPR on normal-mapped reflectors: off (flat mirror), approx (reflect about the mapped normal at the flat "
-                          "reflection distance), raymarch (approx + 4 depth-tested taps toward the pixel)"),
+                          "normal-mapped reflectors: off (flat mirrors); PPR: approx (reflect about the mapped normal at the flat "
+                          "reflection distance), raymarch (4 depth-tested taps along that ray, else flat); SSR and raytraced "
+                          "reflect about the mapped normal unless off"),
         toggle("fallback_env", "env", [](FrameSettings& s) -> bool& { return s.env.fallback; }, false,
                "reflections that leave the screen or find nothing show the sky, blended in near the screen edges (0: black)"),
         number("ssr_distance", "ssr", [](FrameSettings& s) -> float& { return s.ssr.distance; }, 40, 0.1, 1000.0,

@@ -17,6 +17,15 @@ uint32_t resolveFlags(const PprSettings& s) {  // holes / filter / antibleed
     return flags;
 }
 
+uint32_t reflectFlags(const FrameSettings& s) {  // the screen's reflection pass adds normal maps and the environment
+    uint32_t flags = resolveFlags(s.ppr);
+    if (s.ppr.normalMap == NormalMap::Approx) flags |= gpu::kPprNormalApprox;
+    if (s.ppr.normalMap == NormalMap::Raymarch) flags |= gpu::kPprNormalRaymarch;
+    if (s.env.fallback) flags |= gpu::kPprEnvironment;
+    if (s.tiles.indirect) flags |= gpu::kPprIndirect;
+    return flags;
+}
+
 }  // namespace
 
 PprTechnique::PprTechnique(FrameServices& s)
@@ -75,12 +84,14 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
     reflect.intermediate = scatter.intermediate;
     reflect.sceneColor = f.lit;
     reflect.reflectorIds = f.gbuffer.reflector;
+    reflect.depth = f.gbuffer.depth;
+    reflect.normal = f.gbuffer.normal;
+    reflect.reflectors = binding.reflectors;
     reflect.tileSurvivors = scatter.tileSurvivors;
     reflect.tiles = &tiles;
     reflect.debugView = f.settings.view.debug;
     reflect.maxReflectorId = projected;
-    reflect.flags = resolveFlags(s);
-    if (f.settings.tiles.indirect) reflect.flags |= gpu::kPprIndirect;
+    reflect.flags = reflectFlags(f.settings);
     graph::ImageHandle reflection = reflect_.add(f.graph, f.in, reflect);
     // The debug views PPR draws over the whole screen are left as they are.
     const uint32_t debug = reflect.debugView;

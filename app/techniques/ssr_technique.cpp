@@ -13,6 +13,8 @@ passes::SsrInputs ssrInputs(const TechniqueFrame& f, const passes::TileLists& ti
     s.params.thicknessScale = f.settings.ssr.thicknessScale;
     s.params.maxSteps = f.settings.ssr.steps;
     s.indirect = f.settings.tiles.indirect;
+    s.mappedNormals = f.settings.ppr.normalMap != NormalMap::Off;
+    s.environment = f.settings.env.fallback;
     return s;
 }
 

@@ -114,6 +114,7 @@ struct Materials {
     int floor, brick, sandstone, marble, water, mirror, glass, frame;
     int red, blue, yellow, green, teal, orange, white, terracotta, soil, leaves;
     int chrome, satinSteel;  // reflective but curved: no reflector rectangle fits them
+    int waterRippled, tilesPolished, mirrorWavy;  // normal-mapped reflectors (the south corner)
 };
 
 // Texture repeat sizes in metres: 0.75 m floor slabs, 0.3 × 0.15 m bricks, 0.5 × 0.25 m blocks.
@@ -186,6 +187,36 @@ Materials createMaterials(GltfWriter& w, const std::string& dir) {
     M.leaves = plain("leaves", {0.07f, 0.32f, 0.05f, 1.0f}, 0.7f);
     M.chrome = plain("chrome", {0.92f, 0.92f, 0.94f, 1.0f}, 0.03f, 1.0f, true);
     M.satinSteel = plain("steel_satin", {0.75f, 0.72f, 0.68f, 1.0f}, 0.3f, 1.0f, true);
+
+    // Normal-mapped reflectors: flat rectangles whose surfaces are not perfect mirrors.
+    auto normalMapped = [&](MaterialDesc m, const std::string& stem, const Image& normals) {
+        writePng(dir + "/" + stem + "_normal.png", normals);
+        m.normalTexture = w.addTexture(stem + "_normal.png");
+        m.reflective = true;
+        return w.addMaterial(m);
+    };
+    MaterialDesc water;
+    water.name = "puddle_water_rippled";
+    water.baseColor = {0.02f, 0.025f, 0.03f, 1.0f};
+    water.roughness = 0.05f;
+    M.waterRippled = normalMapped(water, "ripples", rippleNormals(256));
+    {
+        const TextureSet tiles = polishedTiles(512);
+        writePng(dir + "/tiles_polished_basecolor.png", tiles.baseColor);
+        writePng(dir + "/tiles_polished_mr.png", tiles.metallicRoughness);
+        MaterialDesc m;
+        m.name = "tiles_polished";
+        m.baseColorTexture = w.addTexture("tiles_polished_basecolor.png");
+        m.metallicRoughnessTexture = w.addTexture("tiles_polished_mr.png");
+        m.roughness = 1.0f;  // the texture's G channel: glossy tops, rough grout
+        M.tilesPolished = normalMapped(m, "tiles_polished", tiles.normal);
+    }
+    MaterialDesc wavy;
+    wavy.name = "mirror_wavy";
+    wavy.baseColor = {0.90f, 0.91f, 0.93f, 1.0f};
+    wavy.roughness = 0.02f;
+    wavy.metallic = 1.0f;
+    M.mirrorWavy = normalMapped(wavy, "mirror_wavy", wavyGlassNormals(256));
     return M;
 }
 
@@ -412,6 +443,66 @@ void buildProps(Layout& L, const Materials& M) {
     glassPanel(L, M, "glass_oblique", {7.0, 1.45, -7.5}, {0.8, 0, 0.6}, {-0.6, 0, 0.8}, 1.8f, 1.2f);
 }
 
+// The south corner: three normal-mapped reflectors (rippled puddle, polished tiles with bevels and
+// grout, a wavy old mirror) and props for them to reflect. Everything lies beyond z = 9.2, behind
+// every other named camera, so their pictures do not change.
+void buildNormalMapped(Layout& L, const Materials& M) {
+    {
+        const glm::dvec3 t(-3.5, kPuddleY, 10.5);
+        MeshData tiles;
+        addQuad(tiles, glm::vec3(t) + glm::vec3(-1.8f, 0.0f, 1.0f), {3.6f, 0.0f, 0.0f}, {0.0f, 0.0f, -2.0f}, 2.0f);
+        ReflectorDesc r;
+        r.normal = {0, 1, 0};
+        r.tangent = {1, 0, 0};
+        r.halfExtents = {1.8, 1.0};
+        r.reflectance = 0.45;
+        L.reflective("tiles_polished", L.mesh(toNode(tiles, t), "tiles_polished", M.tilesPolished), t, r);
+    }
+    {
+        const glm::dvec3 t(0.6, kPuddleY, 10.3);
+        MeshData m;
+        addPuddle(m, glm::vec3(t), {1, 0, 0}, 1.2f, 0.75f, 48, 211);
+        std::vector<glm::vec3> triangles;
+        for (uint32_t index : m.indices) triangles.push_back(m.positions[index]);
+        const std::optional<ppr::scene::Reflector> fit = ppr::scene::fitReflector(triangles);
+        if (!fit) throw std::logic_error("puddle_rippled: outline is not planar");
+        ReflectorDesc r;
+        r.center = glm::dvec3(fit->center) - t;
+        r.normal = glm::dvec3(fit->normal);
+        r.tangent = glm::dvec3(fit->tangent);
+        r.halfExtents = glm::dvec2(fit->halfExtents);
+        r.reflectance = 0.7;
+        L.reflective("puddle_rippled", L.mesh(toNode(m, t), "puddle_rippled", M.waterRippled), t, r);
+    }
+    {
+        // 3.2 x 2 m, facing north (towards the camera), on a low plinth in a frame.
+        const glm::dvec3 c(4.3, 1.4, 11.6);
+        MeshData frame, glassMesh;
+        addBox(frame, {2.5f, 0.0f, 11.62f}, {6.1f, 0.4f, 11.85f}, kStoneTex);
+        addBox(frame, {2.5f, 2.4f, 11.62f}, {6.1f, 2.6f, 11.85f}, kStoneTex);
+        addBox(frame, {2.5f, 0.4f, 11.62f}, {2.7f, 2.4f, 11.85f}, kStoneTex);
+        addBox(frame, {5.9f, 0.4f, 11.62f}, {6.1f, 2.4f, 11.85f}, kStoneTex);
+        L.object("mirror_wavy_frame", L.mesh(frame, "mirror_wavy_frame", M.frame), {0, 0, 0});
+        addQuad(glassMesh, {1.6f, -1.0f, 0.0f}, {-3.2f, 0.0f, 0.0f}, {0.0f, 2.0f, 0.0f}, 2.0f);
+        ReflectorDesc r;
+        r.normal = {0, 0, -1};
+        r.tangent = {-1, 0, 0};
+        r.halfExtents = {1.6, 1.0};
+        r.reflectance = 0.9;
+        L.reflective("mirror_wavy", L.mesh(glassMesh, "mirror_wavy", M.mirrorWavy), c, r);
+    }
+    // Props: behind the tiles and the puddle (reflected in them), in front of the mirror.
+    L.object("pillar_south", L.mesh(roundPillar(2.6f), "pillar_south", M.sandstone), {-3.0, 0, 11.45});
+    MeshData crate, ball, block;
+    addBox(crate, {-0.35f, 0.0f, -0.35f}, {0.35f, 0.7f, 0.35f}, 1.0f, AllFaces & ~NegY);
+    addSphere(ball, {0.0f, 0.0f, 0.0f}, 0.4f, 40, 20, 1.0f);
+    addBox(block, {-0.25f, 0.0f, -0.25f}, {0.25f, 1.5f, 0.25f}, 1.0f, AllFaces & ~NegY);
+    L.object("crate_south", L.mesh(crate, "crate_south", M.blue), {1.0, 0, 11.45}, 20.0);
+    L.object("sphere_south", L.mesh(ball, "sphere_south", M.red), {-1.0, 0.4, 10.9});
+    L.object("block_south", L.mesh(block, "block_south", M.yellow), {-5.0, 0, 11.5});
+    L.object("block_south_b", L.mesh(block, "block_south_b", M.green), {2.4, 0, 9.7}, 30.0);
+}
+
 void buildCameras(Layout& L) {
     L.camera("overview", {8.0, 7.5, 9.0}, -37.2, -25.5);
     L.camera("puddles", {-2.7, 1.3, 3.4}, -2.0, -16.0);
@@ -419,6 +510,7 @@ void buildCameras(Layout& L) {
     L.camera("stairs", {-6.0, 2.7, 0.3}, -28.4, -21.0);
     L.camera("mirror", {-2.2, 1.7, -3.6}, 17.0, -5.0);
     L.camera("glass", {7.6, 2.3, 1.4}, 62.0, -24.0);  // through the east glass at the puddle behind it
+    L.camera("normalmap", {0.4, 2.5, 5.4}, 180.0, -22.0);  // the normal-mapped reflectors of the south corner
 }
 
 }  // namespace
@@ -433,6 +525,7 @@ void writeDefaultScene(const std::string& dir) {
     buildFlowerpotCorner(L, M);
     buildPuddles(L, M);
     buildProps(L, M);
+    buildNormalMapped(L, M);
     buildCameras(L);
     // Informative only: the renderer owns its light; this records the intended sun.
     w.setSceneExtras(Json{{"ppr_sun_direction_to_light", vec(glm::normalize(glm::dvec3(0.35, 0.85, 0.4)))}});

@@ -184,6 +184,69 @@ Image marble(int size) {
     return img;
 }
 
+Image rippleNormals(int size) {
+    // Wrapped (torus) distance to each drop keeps the map tileable; each ring train is a damped
+    // sine of the distance, so the slopes are gentle except close to the drop.
+    struct Drop {
+        float x, y, phase, amplitude;
+    };
+    const Drop drops[] = {{0.21f, 0.30f, 0.0f, 1.0f}, {0.68f, 0.18f, 1.7f, 0.8f}, {0.47f, 0.71f, 3.1f, 1.0f},
+                          {0.85f, 0.80f, 0.6f, 0.7f}, {0.10f, 0.84f, 2.2f, 0.6f}};
+    std::vector<float> height(static_cast<size_t>(size) * size);
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const float u = (x + 0.5f) / size, v = (y + 0.5f) / size;
+            float h = 0.0f;
+            for (const Drop& d : drops) {
+                float dx = std::fabs(u - d.x), dy = std::fabs(v - d.y);
+                dx = std::min(dx, 1.0f - dx);
+                dy = std::min(dy, 1.0f - dy);
+                const float r = std::sqrt(dx * dx + dy * dy);
+                h += d.amplitude * std::sin(6.2831853f * 9.0f * r - d.phase) * std::exp(-7.0f * r);
+            }
+            height[static_cast<size_t>(y) * size + x] = h;
+        }
+    return normalMapFromHeight(height, size, size, 1.2f);
+}
+
+TextureSet polishedTiles(int size) {
+    const int tile = size / 4;
+    const Rgb tileA{0.74f, 0.72f, 0.68f}, tileB{0.66f, 0.64f, 0.61f};
+    const Rgb grout{0.22f, 0.21f, 0.20f};
+    TextureSet set{blank(size), {}, blank(size)};
+    std::vector<float> height(static_cast<size_t>(size) * size);
+    for (int y = 0; y < size; ++y) {
+        for (int x = 0; x < size; ++x) {
+            const float u = (x + 0.5f) / size, v = (y + 0.5f) / size;
+            const Cell c = masonryCell(x, y, tile, tile, size, false);
+            const uint32_t id = static_cast<uint32_t>(c.cy * 16 + c.cx);
+            // Grout 2 texels wide, then a rounded bevel over the next 6 texels, then a flat glossy top.
+            const float bevel = smoothstep(1.5f, 8.0f, c.edge);
+            const float inGrout = 1.0f - smoothstep(1.0f, 2.0f, c.edge);
+            const float cloud = fbm(u, v, 4, 3, 131u + id);
+            const Rgb stone = scale(((c.cx + c.cy) & 1) ? tileA : tileB, 0.92f + 0.12f * cloud);
+            put(set.baseColor, x, y, mix(stone, grout, inGrout));
+            height[static_cast<size_t>(y) * size + x] = std::sqrt(bevel) * 0.9f - 0.25f * inGrout;
+            put(set.metallicRoughness, x, y, roughnessTexel(0.04f + 0.7f * inGrout));
+        }
+    }
+    set.normal = normalMapFromHeight(height, size, size, 3.0f);
+    return set;
+}
+
+Image wavyGlassNormals(int size) {
+    std::vector<float> height(static_cast<size_t>(size) * size);
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const float u = (x + 0.5f) / size, v = (y + 0.5f) / size;
+            // Integer frequencies keep it tileable; the drawing direction is vertical (long waves in v).
+            const float w = std::sin(6.2831853f * (3.0f * u + 0.5f * std::sin(6.2831853f * v))) +
+                            0.35f * std::sin(6.2831853f * (7.0f * u + 2.0f * v)) + 0.6f * (fbm(u, v, 4, 3, 151u) - 0.5f);
+            height[static_cast<size_t>(y) * size + x] = w;
+        }
+    return normalMapFromHeight(height, size, size, 1.0f);
+}
+
 void writePng(const std::string& path, const Image& image) {
     // Fixed settings: the library default could change between stb versions.
     stbi_write_png_compression_level = 9;

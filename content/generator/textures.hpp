@@ -26,6 +26,11 @@ TextureSet bricks(int size);      // 8 rows of staggered bricks with mortar
 TextureSet sandstone(int size);   // 4 rows of large ashlar blocks
 Image marble(int size);           // polished dark marble with light veins (base colour only)
 
+// Normal-mapped reflectors (the slides' normal-map approximation is measured on them):
+Image rippleNormals(int size);     // rain ripples on water: rings around a few drop centres (normal map only)
+TextureSet polishedTiles(int size);  // 4x4 glossy tiles with bevelled edges and grout lines
+Image wavyGlassNormals(int size);  // old drawn mirror glass: long gentle waves (normal map only)
+
 // Writes an RGB PNG with a fixed compression level, so the bytes are reproducible.
 void writePng(const std::string& path, const Image& image);
 

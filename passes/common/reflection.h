@@ -13,6 +13,16 @@ PPR_CONST(float, kReflectionOffscreen, 0.5f)  // planar: reflected point off scr
 // bounce and depends on the viewpoint (a mirror seen from the mirrored camera shows another part of
 // the sky), which no single-bounce screen-space technique can reproduce; not scored.
 PPR_CONST(float, kReflectionSecondary, 0.25f)
+// --set fallback_env=1: a reflection that left the screen or found nothing shows the environment
+// (the sky along the reflected ray); covered, but no screen-space hit.
+PPR_CONST(float, kReflectionEnvironment, 0.6f)
+// --set normalmap (PPR, SSR, the ray-traced reference): a reflector pixel whose normal-mapped normal
+// lies within this cosine of the reflector's plane normal is reflected as the flat mirror, so
+// reflectors without a normal map look exactly as they do with normalmap=off.
+PPR_CONST(float, kFlatNormalCos, 0.99999f)
+// Width of the band along the screen border over which a screen-space hit fades into the environment,
+// as a fraction of the smaller screen side.
+PPR_CONST(float, kEnvironmentEdgeFade, 0.03f)
 
 PPR_BEGIN
 // Reflectance of a reflective surface that no reflector rectangle covers (curved or rough, shaded by

@@ -36,12 +36,14 @@ struct PprResolved {
     bool valid;
     vec3 color;
     ivec2 readTexel;  // the texel whose data was used (hole filling may pick a neighbour)
+    vec2 source;      // screen position (pixels) of the point sample: where the reflected point is seen
 };
 
 PprResolved pprResolve(ivec2 texel, vec2 screenCentre, float pixelsPerTexel, uint flags) {
     PprResolved r;
     r.readTexel = texel;
     r.color = vec3(0.0);
+    r.source = screenCentre;
     uint v0 = fetchValue(texel);
     // Hole filling: take the neighbour with the smallest offset when this texel has no data, or when
     // that neighbour's offset is significantly (kPprHoleMinDistance) shorter — a hole in the first
@@ -75,6 +77,7 @@ PprResolved pprResolve(ivec2 texel, vec2 screenCentre, float pixelsPerTexel, uin
     vec3 filtered = textureLod(sceneLinear, (screenCentre - offsetFiltered) * frame.invScreenSize, 0.0).rgb;
     vec3 unfiltered = textureLod(scenePoint, (screenCentre - offsetPoint) * frame.invScreenSize, 0.0).rgb;
     r.color = unfiltered;
+    r.source = screenCentre - offsetPoint;
     if ((flags & kPprFiltering) != 0u)
         r.color = (flags & kPprAntiBleeding) != 0u ? reduceColorBleeding(filtered, unfiltered) : filtered;
     return r;

@@ -1,7 +1,9 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #include "common/bindings.glsl"
+#include "common/brdf.glsl"
 #include "common/reflection.h"
+#include "common/reflector_data.h"
 #include "ppr_common/encoding.h"
 #include "ppr_common/tiles.h"
 #include "ppr_reflect/ppr_reflect.h"
@@ -18,6 +20,9 @@ layout(set = 0, binding = 4) uniform usampler2D reflectorTex;
 layout(set = 0, binding = 5, rgba16f) uniform writeonly image2D outReflection;
 layout(set = 0, binding = 6, scalar) readonly buffer TileList { uint planarTiles[]; };  // class kTileClassPlanar first
 layout(set = 0, binding = 7, scalar) readonly buffer TileSurvivors { uint tileSurvivors[]; };
+layout(set = 0, binding = 8) uniform sampler2D depthTex;   // reverse-Z: near / view distance, 0 = sky
+layout(set = 0, binding = 9) uniform sampler2D normalTex;  // G-buffer normal (normal-mapped)
+layout(set = 0, binding = 10, scalar) readonly buffer Reflectors { ReflectorData reflectors[]; };
 layout(push_constant, scalar) uniform Push { PprReflectPush pc; };
 
 uint fetchValue(ivec2 p) {
@@ -25,7 +30,42 @@ uint fetchValue(ivec2 p) {
     return imageLoad(intermediate, p).r;
 }
 
+#include "common/environment.glsl"
 #include "ppr_common/ppr_resolve.glsl"
+
+// Projects a world point: pixel coordinates and its view distance (w); false behind the near plane.
+bool projectToScreen(vec3 p, out vec2 pixel, out float w) {
+    vec4 h = frame.viewProj * vec4(p, 1.0);
+    w = h.w;
+    pixel = (h.xy / h.w * 0.5 + 0.5) * frame.screenSize;
+    return h.w > frame.cameraPos.w && all(greaterThanEqual(pixel, vec2(0.0))) && all(lessThan(pixel, frame.screenSize));
+}
+
+// The bonus slides' normal-map approximation. The flat reflection found the reflected point at
+// `flatSource` (pixels); its distance from the surface point stands for the distance along the ray
+// reflected about the normal-mapped normal. approx: the point that far along that ray, projected.
+// raymarch: kPprNormalTaps points between the surface and that point, nearest first; the first one
+// that lies behind the depth buffer (by at most a step) is the hit. False: keep the flat reflection.
+bool normalMappedHit(vec3 surface, vec3 dir, vec2 flatSource, out vec2 hitPixel) {
+    ivec2 src = clamp(ivec2(flatSource), ivec2(0), ivec2(frame.screenSize) - 1);
+    float srcDepth = texelFetch(depthTex, src, 0).r;
+    if (srcDepth <= 0.0) return false;
+    float dist = distance(surface, worldFromDepth((vec2(src) + 0.5) * frame.invScreenSize, srcDepth));
+    float w;
+    if ((pc.flags & kPprNormalRaymarch) == 0u) return projectToScreen(surface + dir * dist, hitPixel, w);
+    float step = dist / float(kPprNormalTaps);
+    for (uint k = 1u; k <= kPprNormalTaps; ++k) {
+        vec2 p;
+        if (!projectToScreen(surface + dir * (step * float(k)), p, w)) return false;
+        float d = texelFetch(depthTex, ivec2(p), 0).r;
+        float s = d > 0.0 ? frame.cameraPos.w / d : 1e30;
+        if (w >= s && w <= s + step) {
+            hitPixel = p;
+            return true;
+        }
+    }
+    return false;
+}
 
 vec3 hue(float angle) { return clamp(abs(fract(angle + vec3(0.0, 2.0 / 3.0, 1.0 / 3.0)) * 6.0 - 3.0) - 1.0, 0.0, 1.0); }
 
@@ -67,14 +107,37 @@ void main() {
     }
 
     PprResolved r = pprResolve(pix, vec2(pix) + 0.5, 1.0, pc.flags);
-    if (!r.valid) {
-        imageStore(outReflection, pix, vec4(0.0, 0.0, 0.0, kReflectionNone));
-        if (pc.debugView == kDebugHoles) imageStore(outReflection, pix, vec4(1.0, 0.0, 0.0, 1.0));
-        return;
-    }
     if (pc.debugView == kDebugHoles) {
-        imageStore(outReflection, pix, vec4(r.readTexel == pix ? vec3(0.0, 0.8, 0.0) : vec3(1.0, 0.85, 0.0), 1.0));
+        vec3 c = !r.valid ? vec3(1.0, 0.0, 0.0) : r.readTexel == pix ? vec3(0.0, 0.8, 0.0) : vec3(1.0, 0.85, 0.0);
+        imageStore(outReflection, pix, vec4(c, 1.0));
         return;
     }
-    imageStore(outReflection, pix, vec4(r.color, r.readTexel == pix ? kReflectionHit : kReflectionFilled));
+    const uint normalModes = kPprNormalApprox | kPprNormalRaymarch;
+    if ((pc.flags & (normalModes | kPprEnvironment)) == 0u) {  // the slides' flat mirror, as it always was
+        imageStore(outReflection, pix, r.valid ? vec4(r.color, r.readTexel == pix ? kReflectionHit : kReflectionFilled)
+                                               : vec4(0.0, 0.0, 0.0, kReflectionNone));
+        return;
+    }
+    vec3 surface = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, texelFetch(depthTex, pix, 0).r);
+    vec3 flatNormal = reflectors[id - 1u].normal;
+    vec3 n = flatNormal;
+    if ((pc.flags & normalModes) != 0u) {
+        vec3 mapped = normalize(texelFetch(normalTex, pix, 0).xyz);
+        if (dot(mapped, flatNormal) < kFlatNormalCos) n = mapped;
+    }
+    vec3 dir = reflect(normalize(surface - frame.cameraPos.xyz), n);
+    if (!r.valid) {  // nothing projected here: the environment, or no reflection
+        bool env = (pc.flags & kPprEnvironment) != 0u;
+        imageStore(outReflection, pix, env ? vec4(environmentRadiance(dir), kReflectionEnvironment) : vec4(0.0, 0.0, 0.0, kReflectionNone));
+        return;
+    }
+    vec3 color = r.color;
+    vec2 seen = r.source;
+    vec2 hit;
+    if (n != flatNormal && dot(dir, flatNormal) > 0.0 && normalMappedHit(surface, dir, r.source, hit)) {
+        color = textureLod(sceneLinear, hit * frame.invScreenSize, 0.0).rgb;
+        seen = hit;
+    }
+    if ((pc.flags & kPprEnvironment) != 0u) color = environmentBlend(color, seen, dir);
+    imageStore(outReflection, pix, vec4(color, r.readTexel == pix ? kReflectionHit : kReflectionFilled));
 }

@@ -9,6 +9,13 @@ PPR_CONST(uint, kPprFiltering, 2u)
 PPR_CONST(uint, kPprAntiBleeding, 4u)
 // Dispatched over the planar tile list (--set indirect=1) instead of the whole screen.
 PPR_CONST(uint, kPprIndirect, 8u)
+// --set normalmap=approx|raymarch: the bonus slides' normal-map approximation (reflection pass only).
+PPR_CONST(uint, kPprNormalApprox, 16u)
+PPR_CONST(uint, kPprNormalRaymarch, 32u)
+// --set fallback_env=1: holes show the sky along the reflected ray; hits fade into it at the screen edge.
+PPR_CONST(uint, kPprEnvironment, 64u)
+// Taps of the normalmap=raymarch march between the pixel and the approximated reflection.
+PPR_CONST(uint, kPprNormalTaps, 4u)
 // Hole filling replaces a pixel's own data only when a neighbour's offset is this much shorter
 // (pixels; the slides' value).
 PPR_CONST(float, kPprHoleMinDistance, 6.0f)

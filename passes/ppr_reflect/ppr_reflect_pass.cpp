@@ -11,10 +11,6 @@ namespace ppr::passes {
 
 PprReflectPass::PprReflectPass(const vk::Context& ctx) : ctx_(ctx) {
     shader::PipelineLayoutDesc layout;
-    layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,         VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
-                           VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                           VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
-                           VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,         VK_DESCRIPTOR_TYPE_STORAGE_BUFFER};
     layout.pushConstantBytes = sizeof(gpu::PprReflectPush);
     pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(ppr_reflect_comp), layout, "ppr.reflect");
 }
@@ -45,6 +41,9 @@ graph::ImageHandle PprReflectPass::add(graph::RenderGraph& g, const FrameInputs&
     else pass.storageWrite(target, &out);
     pass.storageRead(inputs.tiles->lists)
         .storageRead(inputs.tileSurvivors)
+        .sampled(inputs.depth, in.samplers->nearestClamp)
+        .sampled(inputs.normal, in.samplers->nearestClamp)
+        .hostStorage(inputs.reflectors)
         .push(push);
     if (indirect) pass.dispatchIndirect(inputs.tiles->args, sizeof(gpu::TileDispatchArgs) * gpu::kTileClassPlanar);
     else pass.dispatch(in.extent, gpu::kPprTileSize);

@@ -10,6 +10,8 @@ struct PprReflectInputs {
     graph::ImageHandle intermediate;
     graph::ImageHandle sceneColor;
     graph::ImageHandle reflectorIds;
+    graph::ImageHandle depth, normal;         // G-buffer (normal maps, the environment's reflected ray)
+    VkBuffer reflectors = VK_NULL_HANDLE;     // ReflectorData[] (plane normals)
     graph::BufferHandle tileSurvivors;  // ppr.project's per-tile counts (debug=tiles)
     const TileLists* tiles = nullptr;
     uint32_t flags = 0;           // ppr_reflect.h kPpr* toggles; kPprIndirect dispatches over the planar tiles

@@ -4,6 +4,7 @@
 // returning the pixel (centre coordinates) whose lit colour the ray reflects, or false for a miss.
 // Define SSR_USES_HIZ before including to bind the depth hierarchy (binding 9).
 #include "common/bindings.glsl"
+#include "common/brdf.glsl"
 #include "common/reflection.h"
 #include "common/reflector_data.h"
 #include "ppr_common/tiles.h"
@@ -22,6 +23,7 @@ layout(set = 0, binding = 8, rgba16f) uniform image2D outReflection;
 layout(set = 0, binding = 9, r32f) uniform readonly image2D hizAtlas;
 #endif
 layout(push_constant, scalar) uniform Push { SsrPush pc; };
+#include "common/environment.glsl"
 
 // The reflected ray. View space looks down −Z; `k` is 1/w = 1/view distance, affine along the
 // screen-space segment, so the distance at a fraction t of it is 1 / mix(k0, k1, t).
@@ -29,6 +31,7 @@ struct SsrRay {
     vec3 viewOrigin, viewEnd;  // view space; the end clipped at the near plane (not at the screen)
     vec2 p0, p1;               // pixels; p1 clipped to the screen
     float k0, k1;              // 1/distance at p0 and p1
+    vec3 worldDir;             // the reflected direction (world space)
 };
 
 bool ssrTrace(SsrRay ray, out vec2 hitPixel);
@@ -72,10 +75,18 @@ float ssrScreenExit(vec2 p0, vec2 p1) {
 
 bool ssrSetupRay(ivec2 pix, float depth, uint reflectorId, out SsrRay ray) {
     vec3 world = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depth);
-    vec3 n = reflectorId != 0u ? reflectors[reflectorId - 1u].normal : normalize(texelFetch(normalTex, pix, 0).xyz);
+    vec3 mapped = normalize(texelFetch(normalTex, pix, 0).xyz);
+    vec3 n = mapped;
+    // Reflector pixels: the reflector's plane, as PPR and planar see it; with normal maps on, the
+    // mapped normal where it leaves the plane.
+    if (reflectorId != 0u) {
+        n = reflectors[reflectorId - 1u].normal;
+        if ((pc.flags & kSsrMappedNormals) != 0u && dot(mapped, n) < kFlatNormalCos) n = mapped;
+    }
     vec3 v = normalize(world - frame.cameraPos.xyz);
     if (dot(v, n) >= 0.0) return false;  // the reflecting side faces away from the camera
     vec3 r = reflect(v, n);
+    ray.worldDir = r;
     float distance = length(world - frame.cameraPos.xyz);
     // Lift the origin off the surface so the first samples do not find the surface itself.
     vec3 origin = world + n * (1e-3 * distance);
@@ -115,7 +126,14 @@ void main() {
     float depth = texelFetch(depthTex, pix, 0).r;
     SsrRay ray;
     vec2 hit;
-    if (depth > 0.0 && ssrSetupRay(pix, depth, id, ray) && ssrTrace(ray, hit))
-        result = vec4(textureLod(sceneColor, hit * frame.invScreenSize, 0.0).rgb, kReflectionHit);
+    bool env = (pc.flags & kSsrEnvironment) != 0u;
+    if (depth > 0.0 && ssrSetupRay(pix, depth, id, ray)) {
+        if (ssrTrace(ray, hit)) {
+            vec3 c = textureLod(sceneColor, hit * frame.invScreenSize, 0.0).rgb;
+            result = vec4(env ? environmentBlend(c, hit, ray.worldDir) : c, kReflectionHit);
+        } else if (env) {
+            result = vec4(environmentRadiance(ray.worldDir), kReflectionEnvironment);
+        }
+    }
     imageStore(outReflection, pix, result);
 }

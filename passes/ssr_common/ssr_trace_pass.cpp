@@ -9,12 +9,6 @@ namespace ppr::passes {
 SsrTracePass::SsrTracePass(const vk::Context& ctx, shader::Spirv spirv, std::string name, bool usesHiz)
     : ctx_(ctx), name_(std::move(name)), usesHiz_(usesHiz) {
     shader::PipelineLayoutDesc layout;
-    layout.pushBindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,         VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                           VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                           VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                           VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,         VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                           VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
-    if (usesHiz_) layout.pushBindings.push_back(VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);
     layout.pushConstantBytes = sizeof(gpu::SsrPush);
     pipeline_ = shader::createComputePipeline(ctx, spirv, layout, name_);
 }
@@ -36,6 +30,8 @@ graph::ImageHandle SsrTracePass::trace(graph::RenderGraph& g, const FrameInputs&
     } else if (fresh) {
         push.flags |= gpu::kSsrWriteAll;
     }
+    if (inputs.mappedNormals) push.flags |= gpu::kSsrMappedNormals;
+    if (inputs.environment) push.flags |= gpu::kSsrEnvironment;
     const GBuffer& gb = *inputs.gbuffer;
     const VkSampler point = in.samplers->nearestClamp;
     graph::ImageHandle out;

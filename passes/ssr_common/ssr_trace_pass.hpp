@@ -28,6 +28,8 @@ struct SsrInputs {
     uint32_t hizLevels = 0;
     SsrParams params;
     bool indirect = true;                      // over the tile lists (--set indirect) or the whole screen
+    bool mappedNormals = false;                // reflector pixels use the normal-mapped normal (--set normalmap)
+    bool environment = false;                  // misses show the sky (--set fallback_env)
 };
 
 class SsrTracePass {

@@ -229,6 +229,26 @@ TEST_F(DefaultScene, HasTheNamedCamerasLookingAtReflectors) {
     EXPECT_TRUE(has("mirror", "mirror"));
     EXPECT_GE(std::count_if(seen["stairs"].begin(), seen["stairs"].end(), [](const std::string& s) { return s.rfind("step_", 0) == 0; }), 5);
     EXPECT_GE(seen["overview"].size(), 8u);
+    // The normal-mapped corner: its camera sees all three, and no other camera sees any of them (their
+    // pictures stay as they were before the corner existed).
+    for (const char* r : {"tiles_polished", "puddle_rippled", "mirror_wavy"}) {
+        EXPECT_TRUE(has("normalmap", r)) << r;
+        for (const auto& [cam, list] : seen)
+            if (cam != "normalmap") EXPECT_FALSE(has(cam, r)) << r << " seen from " << cam;
+    }
+}
+
+TEST_F(DefaultScene, NormalMappedReflectorsHaveNormalMaps) {
+    // Each of the corner's reflectors is drawn with a reflective material that has a normal texture.
+    std::map<std::string, int> materialOf;
+    for (const json& n : gltf.at("nodes"))
+        if (n.contains("mesh")) materialOf[n.at("name")] = gltf["meshes"][n["mesh"].get<int>()]["primitives"][0].value("material", -1);
+    for (const char* r : {"tiles_polished", "puddle_rippled", "mirror_wavy"}) {
+        ASSERT_TRUE(materialOf.count(r)) << r;
+        const json& m = gltf.at("materials").at(materialOf[r]);
+        EXPECT_TRUE(m.contains("normalTexture")) << r;
+        EXPECT_TRUE(m.at("extras").value("ppr_reflective", false)) << r;
+    }
 }
 
 TEST_F(DefaultScene, HasTheRequiredReflectorKinds) {
