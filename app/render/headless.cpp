@@ -133,6 +133,7 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
         req.camera = camera;
         req.extent = extent;
         req.technique = technique_;
+        req.reference = reference_;
         req.settings = settings_.values();
         req.target = &targetImport_;
         const bool last = f + 1 == frames;

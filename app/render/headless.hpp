@@ -56,6 +56,8 @@ public:
     const std::string& technique() const { return technique_; }
     Settings& settings() { return settings_; }
     const Settings& settings() const { return settings_; }
+    // The reference A/B compares with (default planar).
+    void setReference(const std::string& reference) { reference_ = reference; }
     // The viewer's A/B view for the following captures (tests).
     void setAb(AbView view, float split) {
         ab_ = view;
@@ -84,6 +86,7 @@ private:
     graph::ExternalBuffer glassImport_;
     uint32_t glassReadbackSize_ = 0;
     std::string technique_ = "none";
+    std::string reference_ = "planar";
     Settings settings_;
     AbCompareTaps abTaps_;
     AbView ab_ = AbView::Off;

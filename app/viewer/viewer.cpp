@@ -168,6 +168,7 @@ private:
     std::unique_ptr<HeadlessRenderer> headless_;  // captures, created on the first one
     // The user's choices, handed to every frame's request by value.
     std::string technique_;
+    std::string reference_ = "planar";  // what A/B, the heat map and hold-B compare with
     Settings settings_;
     std::unique_ptr<AbCompareTaps> abTaps_;
     std::unique_ptr<PickTap> pickTap_;
@@ -350,6 +351,7 @@ void Viewer::buildUi() {
     m.pprStats = pprStats_;
     m.ab = &ab_;
     m.abSplit = &abSplit_;
+    m.reference = &reference_;
     m.glassStats = glassStats_;
     m.reflectors = static_cast<uint32_t>(renderer_->reflectors().size());
     m.reflectorsProjected = std::min(m.reflectors, gpu::kPprMaxReflectors);
@@ -420,9 +422,10 @@ bool Viewer::renderFrame(uint32_t slot) {
     req.camera = camera_.pose;
     req.extent = extent;
     req.target = &target;
-    // Hold-to-compare: while B is held the frame shows the planar ground truth.
+    // Hold-to-compare: while B is held the frame shows the reference.
     const bool holdCompare = !imgui_->wantsKeyboard() && glfwGetKey(window_.handle, GLFW_KEY_B) == GLFW_PRESS;
-    req.technique = holdCompare ? "planar" : technique_;
+    req.technique = holdCompare ? reference_ : technique_;
+    req.reference = reference_;
     req.settings = settings_.values();
     if (pendingClick_) {  // the G-buffer under the click, read back once this slot's fence signals
         req.taps.push_back(pickTap_->tap(pickPixel_, &pickImport_[slot]));

@@ -280,14 +280,21 @@ PanelActions drawPanel(PanelModel& m) {
                 if (ImGui::Selectable(t.c_str(), t == m.technique)) a.technique = t;
             ImGui::EndCombo();
         }
-        ImGui::TextDisabled("planar = ground truth (re-renders the scene per plane)");
-        if (m.ab && m.abSplit) {
-            // A/B: the planar ground truth beside the technique, or the technique's error against it.
-            const char* modes[] = {"off", "split (planar on the right)", "error heat map"};
+        if (m.reference && ImGui::BeginCombo("reference", m.reference->c_str())) {
+            for (const TechniqueDesc& t : techniqueTable())
+                if (t.reference && ImGui::Selectable(t.name.c_str(), t.name == *m.reference)) *m.reference = t.name;
+            ImGui::EndCombo();
+        }
+        helpTooltip("the ground truth A/B, the heat map and hold-B show: planar (mirrored re-render, flat mirrors) or "
+                    "raytraced (ray queries: normal maps, glass, off-screen reflections)");
+        if (m.ab && m.abSplit && m.reference) {
+            // A/B: the reference beside the technique, or the technique's error against it.
+            const std::string split = "split (" + *m.reference + " on the right)";
+            const char* modes[] = {"off", split.c_str(), "error heat map"};
             int mode = static_cast<int>(*m.ab);
-            if (ImGui::Combo("A/B with planar", &mode, modes, 3)) *m.ab = static_cast<AbView>(mode);
+            if (ImGui::Combo("A/B", &mode, modes, 3)) *m.ab = static_cast<AbView>(mode);
             if (*m.ab == AbView::Split) ImGui::SliderFloat("split", m.abSplit, 0.0f, 1.0f, "%.2f");
-            ImGui::TextDisabled("hold B: show the planar ground truth");
+            ImGui::TextDisabled("hold B: show the reference");
         }
         if (!m.warning.empty()) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.2f, 1.0f), "%s", m.warning.c_str());
         if (m.technique == "ppr" && m.pprStats) {

@@ -87,8 +87,9 @@ struct PanelModel {
     std::optional<GlassStats> glassStats;        // its glass atlas (PPR with glass panels)
     uint32_t reflectors = 0, reflectorsProjected = 0;
     std::string status;  // last capture result or settings error
-    AbView* ab = nullptr;       // A/B with the planar ground truth (edited in place)
+    AbView* ab = nullptr;       // A/B with the reference (edited in place)
     float* abSplit = nullptr;   // split position, fraction of the width
+    std::string* reference = nullptr;  // the ground truth A/B and hold-B show (a reference row of the table)
 };
 
 struct PanelActions {
