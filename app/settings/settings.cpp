@@ -126,7 +126,7 @@ const std::vector<SettingDecl>& settingDecls() {
         choice<PprFallback>("fallback", "ppr", [](FrameSettings& s) -> PprFallback& { return s.ppr.fallback; }, {"ssr", "none"}, "ssr",
                             "PPR: reflective pixels no reflector rectangle covers (curved, rough) get ssr-hiz over the non-planar tiles, or nothing"),
         choice<NormalMap>("normalmap", "ppr, ssr, raytraced", [](FrameSettings& s) -> NormalMap& { return s.ppr.normalMap; }, {"off", "approx", "raymarch"},
-                          "off",
+                          "raymarch",
                           "normal-mapped reflectors: off (flat mirrors); PPR: approx (reflect about the mapped normal at the flat "
                           "reflection distance), raymarch (4 depth-tested taps along that ray, else flat); SSR and raytraced "
                           "reflect about the mapped normal unless off"),

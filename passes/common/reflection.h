@@ -15,7 +15,7 @@ PPR_CONST(float, kReflectionOffscreen, 0.5f)  // planar: reflected point off scr
 PPR_CONST(float, kReflectionSecondary, 0.25f)
 // --set fallback_env=1: a reflection that left the screen or found nothing shows the environment
 // (the sky along the reflected ray); covered, but no screen-space hit.
-PPR_CONST(float, kReflectionEnvironment, 0.6f)
+PPR_CONST(float, kReflectionEnvironment, 0.625f)  // exact in RGBA16F, like every code
 // --set normalmap (PPR, SSR, the ray-traced reference): a reflector pixel whose normal-mapped normal
 // lies within this cosine of the reflector's plane normal is reflected as the flat mirror, so
 // reflectors without a normal map look exactly as they do with normalmap=off.
