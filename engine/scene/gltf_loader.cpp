@@ -2,12 +2,14 @@
 // into draws, cameras and reflectors. Per-primitive work is in gltf_meshes.cpp.
 #include "scene/errors.hpp"
 #include "scene/gltf_internal.hpp"
+#include "util/json_depth.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -28,6 +30,27 @@ std::string firstLine(const std::string& text) {
     return s.empty() ? "unknown tinygltf failure" : s;
 }
 
+// tinygltf parses its JSON recursively: refuse nesting that would exhaust the stack (the JSON chunk
+// of a .glb, the whole text of a .gltf) before it runs.
+void refuseDeepNesting(const std::string& path, bool binary) {
+    std::ifstream f(path, std::ios::binary);
+    std::string json;
+    if (binary) {
+        char header[20] = {};  // magic, version, length, then the first chunk's length and type
+        f.read(header, sizeof header);
+        uint32_t chunkLength = 0;
+        std::memcpy(&chunkLength, header + 12, 4);
+        if (!f || std::string(header + 16, 4) != "JSON") return;  // tinygltf names the problem
+        json.resize(std::min<uint64_t>(chunkLength, uint64_t(1) << 30));
+        f.read(json.data(), static_cast<std::streamsize>(json.size()));
+        json.resize(static_cast<size_t>(f.gcount()));
+    } else {
+        json.assign(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+    }
+    if (const size_t at = util::jsonNestingExceeded(json); at != std::string::npos)
+        fail(path + ": JSON nested deeper than " + std::to_string(util::kMaxJsonNesting) + " levels at byte " + std::to_string(at + 1));
+}
+
 void loadModel(const std::string& path, tinygltf::Model& model) {
     std::error_code ec;
     const auto status = fs::status(path, ec);
@@ -36,6 +59,7 @@ void loadModel(const std::string& path, tinygltf::Model& model) {
     char magic[4] = {};
     std::ifstream(path, std::ios::binary).read(magic, 4);
     const bool binary = std::string(magic, 4) == "glTF";  // content decides, not the extension
+    refuseDeepNesting(path, binary);
 
     tinygltf::TinyGLTF loader;
     std::string err, warn;

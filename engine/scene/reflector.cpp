@@ -2,6 +2,7 @@
 #include "scene/reflector.hpp"
 
 #include "scene/errors.hpp"
+#include "util/json_depth.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -150,6 +151,8 @@ Reflector parseReflector(const json& j, const std::string& where) {
 }
 
 std::vector<Reflector> parseReflectorFile(const std::string& text, const std::string& file) {
+    if (const size_t at = util::jsonNestingExceeded(text); at != std::string::npos)
+        fail(file + ": JSON nested deeper than " + std::to_string(util::kMaxJsonNesting) + " levels at byte " + std::to_string(at + 1));
     json doc;
     try {
         doc = json::parse(text);
