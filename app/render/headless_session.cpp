@@ -1,6 +1,7 @@
 #include "render/headless_session.hpp"
 
 #include <cstdio>
+#include <stdexcept>
 
 namespace ppr::app {
 
@@ -15,8 +16,18 @@ HeadlessSession::HeadlessSession(const Options& o) : options(o) {
     renderer = std::make_unique<Renderer>(*ctx, scene);
     headless = std::make_unique<HeadlessRenderer>(*ctx, *renderer);
     for (const std::string& kv : o.sets) headless->settings().apply(kv);
-    headless->setTechnique(o.technique);
+    const TechniqueVariant variant = parseTechniqueVariant(o.technique);
+    for (const std::string& kv : variant.sets) headless->settings().apply(kv);
+    headless->setTechnique(variant.name);
     extent = {o.width, o.height};
+    // A technique this device cannot run is refused before anything renders (one line, exit non-zero).
+    const bool compare = o.mode == Mode::Compare;
+    for (const std::string& t : compare ? o.techniques : std::vector<std::string>{o.technique})
+        if (const std::string why = renderer->unsupported(parseTechniqueVariant(t).name, extent); !why.empty())
+            throw std::runtime_error("--technique " + t + ": " + why);
+    if (compare)
+        if (const std::string why = renderer->unsupported(o.reference, extent); !why.empty())
+            throw std::runtime_error("--reference " + o.reference + ": " + why);
     frames = o.frames ? o.frames : 5;
 }
 

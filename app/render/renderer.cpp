@@ -82,6 +82,11 @@ Technique* Renderer::module(const std::string& technique) const {
     return modules_[static_cast<size_t>(&desc - techniqueTable().data())].get();
 }
 
+std::string Renderer::unsupported(const std::string& technique, VkExtent2D extent) const {
+    const Technique* t = module(technique);
+    return t ? t->unsupported(extent) : std::string();
+}
+
 void Renderer::runTaps(const FrameRequest& req, TapPoint point, TapContext& ctx) {
     for (const FrameTap& tap : req.taps)
         if (tap.point == point) tap.add(ctx);

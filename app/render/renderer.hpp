@@ -52,6 +52,9 @@ public:
     // Records the frame for `slot` into cmd (the caller begins/ends/submits cmd). Throws
     // std::runtime_error for a technique not in the table.
     FrameRecord record(VkCommandBuffer cmd, uint32_t slot, const FrameRequest& request);
+    // Why `technique` cannot render frames of this size on this device, "" when it can
+    // (Technique::unsupported; e.g. raytraced on a device without VK_KHR_ray_query).
+    std::string unsupported(const std::string& technique, VkExtent2D extent) const;
     // Per-pass GPU times of the frame last recorded in `slot` (call after its fence signalled).
     std::vector<graph::PassTiming> timings(uint32_t slot) { return executor_->readTimings(slot); }
     // Tile and culling counters of the frame last recorded in `slot` (after its fence), when it ran PPR.

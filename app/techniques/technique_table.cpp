@@ -7,6 +7,7 @@
 #include "techniques/floor_technique.hpp"
 #include "techniques/planar_technique.hpp"
 #include "techniques/ppr_technique.hpp"
+#include "techniques/raytraced_technique.hpp"
 #include "techniques/ssr_technique.hpp"
 
 #include <algorithm>
@@ -37,6 +38,8 @@ const std::vector<TechniqueDesc>& techniqueTable() {
         {"ssr-linear", "screen-space ray march, linear steps + binary search (the SSR write-up's)", {"tiles."}, false,
          makeSsr<passes::makeSsrLinearPass, false>},
         {"planar", "ground truth: the scene re-rendered per reflector plane from the mirrored eye", {}, true, make<PlanarTechnique>},
+        {"raytraced", "exact reference: mirror rays traced through the scene with VK_KHR_ray_query, hits lit as the lighting pass lights them",
+         {}, true, make<RaytracedTechnique>},
         {"floor", "the cost floor of screen-space reflections (one read of depth and colour; draws no reflection)", {}, false,
          make<FloorTechnique>},
         {"none", "the lit scene without reflections", {}, false, nullptr},

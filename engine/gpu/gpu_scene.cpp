@@ -6,9 +6,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 
 namespace ppr::gpu {
+
+static_assert(sizeof(VertexData) == sizeof(scene::Vertex) && offsetof(VertexData, position) == offsetof(scene::Vertex, position) &&
+                  offsetof(VertexData, normal) == offsetof(scene::Vertex, normal) &&
+                  offsetof(VertexData, tangent) == offsetof(scene::Vertex, tangent) && offsetof(VertexData, uv) == offsetof(scene::Vertex, uv0),
+              "gpu::VertexData (scene_data.h) must match scene::Vertex");
 
 vk::Buffer uploadBuffer(const vk::Context& ctx, const void* data, VkDeviceSize bytes, VkBufferUsageFlags usage,
                         const std::string& name) {
@@ -41,9 +47,14 @@ bool GpuScene::transparent(uint32_t draw) const {
 }
 
 GpuScene::GpuScene(const vk::Context& ctx, const scene::Scene& scene, VkSampler materialSampler) : ctx_(ctx), scene_(scene) {
+    // Storage: ray-query hits read their triangle's vertices. With ray queries, also the input of the
+    // acceleration-structure builds (gpu/acceleration_structures.hpp), which take device addresses.
+    VkBufferUsageFlags geometryUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    if (ctx.rayQuery().available)
+        geometryUsage |= VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
     vertices_ = uploadBuffer(ctx, scene.vertices.data(), scene.vertices.size() * sizeof(scene::Vertex),
-                             VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "scene vertices");
-    indices_ = uploadBuffer(ctx, scene.indices.data(), scene.indices.size() * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                             VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | geometryUsage, "scene vertices");
+    indices_ = uploadBuffer(ctx, scene.indices.data(), scene.indices.size() * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT | geometryUsage,
                             "scene indices");
 
     std::vector<DrawData> draws;
@@ -54,6 +65,8 @@ GpuScene::GpuScene(const vk::Context& ctx, const scene::Scene& scene, VkSampler 
         const scene::Mesh& m = scene.meshes[d.mesh];
         g.material = m.material >= 0 ? static_cast<uint32_t>(m.material) : static_cast<uint32_t>(scene.materials.size());
         g.reflectorId = d.reflector >= 0 ? static_cast<uint32_t>(d.reflector) + 1 : 0;
+        g.firstIndex = m.firstIndex;
+        g.vertexOffset = m.vertexOffset;
         if (m.material >= 0 && scene.materials[size_t(m.material)].transparent)
             transparentDraws_.push_back(static_cast<uint32_t>(draws.size()));
         draws.push_back(g);
@@ -83,8 +96,12 @@ GpuScene::GpuScene(const vk::Context& ctx, const scene::Scene& scene, VkSampler 
 }
 
 void GpuScene::uploadTextures(VkSampler sampler) {
+    // Material textures are sampled by fragment shaders and by the ray-traced reference's compute pass.
+    constexpr VkPipelineStageFlags2 kSampledStages = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
     const uint32_t count = std::max<uint32_t>(1, static_cast<uint32_t>(scene_.textures.size()));
-    VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, count, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
+    // Fragment shaders (G-buffer, glass) and compute (the ray-traced reference shades its hits).
+    VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, count,
+                                         VK_SHADER_STAGE_FRAGMENT_BIT | VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
     VkDescriptorBindingFlags flags = VK_DESCRIPTOR_BINDING_PARTIALLY_BOUND_BIT;
     VkDescriptorSetLayoutBindingFlagsCreateInfo bfi{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_BINDING_FLAGS_CREATE_INFO};
     bfi.bindingCount = 1;
@@ -158,10 +175,10 @@ void GpuScene::uploadTextures(VkSampler sampler) {
                 vkCmdBlitImage(cmd, img.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, img.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit,
                                VK_FILTER_LINEAR);
                 barrier(m - 1, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                        VK_ACCESS_2_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+                        VK_ACCESS_2_TRANSFER_READ_BIT, kSampledStages, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
             }
             barrier(mips - 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                    VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+                    VK_ACCESS_2_TRANSFER_WRITE_BIT, kSampledStages, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
         });
         vk::destroyBuffer(ctx_, staging);
         infos.push_back({sampler, img.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});

@@ -9,8 +9,8 @@ struct DrawData {
     mat4 normalMatrix;  // inverse-transpose of world (upper 3x3 used)
     uint material;
     uint reflectorId;   // load-time binding (index + 1, 0 = none); the frame's is common/surface_binding.hpp
-    uint pad0;
-    uint pad1;
+    uint firstIndex;    // the mesh's triangles in the scene index buffer (ray-query hits fetch their vertices)
+    int vertexOffset;   // added to each index, as vkCmdDrawIndexed does
 };
 
 struct MaterialData {
@@ -25,6 +25,15 @@ struct MaterialData {
     uint pad0;
 };
 
+// scene::Vertex as shaders that read the vertex buffer as storage see it (the ray-traced reference's
+// hits); gpu_scene.cpp checks the two agree member by member.
+struct VertexData {
+    vec3 position;
+    vec3 normal;
+    vec4 tangent;  // xyz + handedness sign in w
+    vec2 uv;
+};
+
 // Push constants of the mesh passes (shadow, gbuffer).
 struct DrawPush {
     uint drawIndex;
@@ -34,6 +43,7 @@ struct DrawPush {
 };
 PPR_END
 PPR_SIZE_CHECK(DrawData, 144);
+PPR_SIZE_CHECK(VertexData, 48);
 PPR_SIZE_CHECK(MaterialData, 48);
 PPR_SIZE_CHECK(DrawPush, 16);
 

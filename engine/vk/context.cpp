@@ -6,6 +6,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace ppr::vk {
 namespace {
@@ -195,6 +196,33 @@ std::unique_ptr<Context> Context::create(const ContextOptions& options) {
     }
     if (!found) throw std::runtime_error("vulkan: " + ctx->info_.name + " has no graphics+compute queue with timestamps");
 
+    // Ray queries (optional: only the `raytraced` reference needs them). All or nothing.
+    RayQuerySupport& rq = ctx->rayQuery_;
+    rq.hidden = envFlag("PPR_HIDE_RAY_QUERY");
+    const char* const rayExtensions[] = {VK_KHR_RAY_QUERY_EXTENSION_NAME, VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
+                                         VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME};
+    for (const char* e : rayExtensions)
+        if (rq.hidden || !hasDeviceExtension(ctx->physical_, e)) rq.missing += (rq.missing.empty() ? "" : ", ") + std::string(e);
+    VkPhysicalDeviceRayQueryFeaturesKHR rayQueryFeatures{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
+    VkPhysicalDeviceAccelerationStructureFeaturesKHR accelFeatures{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
+    accelFeatures.pNext = &rayQueryFeatures;
+    if (rq.missing.empty()) {
+        VkPhysicalDeviceVulkan12Features s12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+        s12.pNext = &accelFeatures;
+        VkPhysicalDeviceFeatures2 s2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+        s2.pNext = &s12;
+        vkGetPhysicalDeviceFeatures2(ctx->physical_, &s2);
+        if (!rayQueryFeatures.rayQuery) rq.missing = "the rayQuery feature";
+        else if (!accelFeatures.accelerationStructure) rq.missing = "the accelerationStructure feature";
+        else if (!s12.bufferDeviceAddress) rq.missing = "the bufferDeviceAddress feature";
+        // Only what the reference uses: no capture/replay, indirect builds or host commands.
+        accelFeatures = {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR, &rayQueryFeatures};
+        accelFeatures.accelerationStructure = VK_TRUE;
+        rayQueryFeatures = {VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
+        rayQueryFeatures.rayQuery = VK_TRUE;
+    }
+    rq.available = rq.missing.empty();
+
     // Features the renderer relies on (all supported by lavapipe on Mesa 25 and by desktop GPUs).
     VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
     f13.synchronization2 = VK_TRUE;
@@ -209,6 +237,10 @@ std::unique_ptr<Context> Context::create(const ContextOptions& options) {
     f12.scalarBlockLayout = VK_TRUE;
     f12.hostQueryReset = VK_TRUE;
     f12.separateDepthStencilLayouts = VK_TRUE;  // DEPTH_ATTACHMENT_OPTIMAL / DEPTH_READ_ONLY_OPTIMAL
+    if (rq.available) {
+        f12.bufferDeviceAddress = VK_TRUE;  // acceleration-structure build inputs and scratch
+        f13.pNext = &accelFeatures;
+    }
     VkPhysicalDeviceFeatures2 f2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
     f2.pNext = &f12;
     f2.features.samplerAnisotropy = VK_TRUE;
@@ -250,6 +282,7 @@ std::unique_ptr<Context> Context::create(const ContextOptions& options) {
 
     std::vector<const char*> deviceExtensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
     if (options.swapchain) deviceExtensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+    if (rq.available) deviceExtensions.insert(deviceExtensions.end(), std::begin(rayExtensions), std::end(rayExtensions));
 
     float priority = 1.0f;
     VkDeviceQueueCreateInfo qci{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -267,7 +300,25 @@ std::unique_ptr<Context> Context::create(const ContextOptions& options) {
     ctx->pushDescriptorSet_ = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
         vkGetDeviceProcAddr(ctx->device_, "vkCmdPushDescriptorSetKHR"));
 
+    if (rq.available) {
+        auto load = [&](auto& fn, const char* name) {
+            fn = reinterpret_cast<std::remove_reference_t<decltype(fn)>>(vkGetDeviceProcAddr(ctx->device_, name));
+            if (!fn) throw std::runtime_error(std::string("vulkan: ") + ctx->info_.name + " advertises ray queries but has no " + name);
+        };
+        load(rq.getBuildSizes, "vkGetAccelerationStructureBuildSizesKHR");
+        load(rq.createAccelerationStructure, "vkCreateAccelerationStructureKHR");
+        load(rq.destroyAccelerationStructure, "vkDestroyAccelerationStructureKHR");
+        load(rq.cmdBuild, "vkCmdBuildAccelerationStructuresKHR");
+        load(rq.getDeviceAddress, "vkGetAccelerationStructureDeviceAddressKHR");
+        VkPhysicalDeviceAccelerationStructurePropertiesKHR accelProps{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_PROPERTIES_KHR};
+        VkPhysicalDeviceProperties2 p2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+        p2.pNext = &accelProps;
+        vkGetPhysicalDeviceProperties2(ctx->physical_, &p2);
+        rq.scratchAlignment = std::max<VkDeviceSize>(1, accelProps.minAccelerationStructureScratchOffsetAlignment);
+    }
+
     VmaAllocatorCreateInfo aci{};
+    if (rq.available) aci.flags |= VMA_ALLOCATOR_CREATE_BUFFER_DEVICE_ADDRESS_BIT;
     aci.vulkanApiVersion = VK_API_VERSION_1_3;
     aci.physicalDevice = ctx->physical_;
     aci.device = ctx->device_;
@@ -298,6 +349,11 @@ Context::~Context() {
         if (destroy) destroy(instance_, messenger_, nullptr);
     }
     if (instance_) vkDestroyInstance(instance_, nullptr);
+}
+
+std::string Context::rayQueryUnavailableReason() const {
+    if (rayQuery_.available) return {};
+    return "this device lacks " + rayQuery_.missing + " (" + info_.name + (rayQuery_.hidden ? "; hidden by PPR_HIDE_RAY_QUERY=1" : "") + ")";
 }
 
 void Context::setName(VkObjectType type, uint64_t handle, const std::string& n) const {

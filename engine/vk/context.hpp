@@ -31,6 +31,21 @@ struct DeviceInfo {
     uint32_t timestampValidBits = 0;
 };
 
+// Ray queries from compute shaders (the `raytraced` reference): VK_KHR_acceleration_structure,
+// VK_KHR_ray_query, VK_KHR_deferred_host_operations and bufferDeviceAddress, enabled together when the
+// device has them all. PPR_HIDE_RAY_QUERY=1 makes the context behave as if it had none of them.
+struct RayQuerySupport {
+    bool available = false;
+    std::string missing;  // when unavailable: what the device lacks, e.g. "VK_KHR_ray_query"
+    bool hidden = false;  // unavailable because PPR_HIDE_RAY_QUERY is set
+    VkDeviceSize scratchAlignment = 1;  // minAccelerationStructureScratchOffsetAlignment
+    PFN_vkGetAccelerationStructureBuildSizesKHR getBuildSizes = nullptr;
+    PFN_vkCreateAccelerationStructureKHR createAccelerationStructure = nullptr;
+    PFN_vkDestroyAccelerationStructureKHR destroyAccelerationStructure = nullptr;
+    PFN_vkCmdBuildAccelerationStructuresKHR cmdBuild = nullptr;
+    PFN_vkGetAccelerationStructureDeviceAddressKHR getDeviceAddress = nullptr;
+};
+
 // Validation messages are counted (and printed) from the debug-utils callback.
 struct ValidationCounters {
     std::atomic<uint32_t> errors{0};
@@ -64,6 +79,10 @@ public:
     void beginLabel(VkCommandBuffer cmd, const char* label) const;
     PFN_vkCmdPushDescriptorSetKHR pushDescriptorSet() const { return pushDescriptorSet_; }
     void endLabel(VkCommandBuffer cmd) const;
+    // Ray queries and acceleration structures (entry points loaded when available).
+    const RayQuerySupport& rayQuery() const { return rayQuery_; }
+    // "this device lacks VK_KHR_ray_query (llvmpipe ...)" when ray queries are unavailable, else "".
+    std::string rayQueryUnavailableReason() const;
 
     // Synchronous one-off command buffer (uploads at load time only, never per frame).
     void immediateSubmit(const std::function<void(VkCommandBuffer)>& record) const;
@@ -86,6 +105,7 @@ private:
     PFN_vkCmdBeginDebugUtilsLabelEXT beginLabel_ = nullptr;
     PFN_vkCmdEndDebugUtilsLabelEXT endLabel_ = nullptr;
     PFN_vkCmdPushDescriptorSetKHR pushDescriptorSet_ = nullptr;
+    RayQuerySupport rayQuery_;
 };
 
 // One command buffer to the context's queue, optionally waiting on / signalling a semaphore.
@@ -100,6 +120,8 @@ struct Buffer {
     void* mapped = nullptr;  // persistently mapped when created host-visible
 };
 enum class MemoryUse { GpuOnly, Upload, Readback };
+// Buffers whose device address is taken (usage SHADER_DEVICE_ADDRESS) need bufferDeviceAddress, which
+// the context enables together with ray queries (Context::rayQuery().available).
 Buffer createBuffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, MemoryUse use,
                     const std::string& name);
 void destroyBuffer(const Context& ctx, Buffer& buffer);

@@ -7,7 +7,7 @@
 using namespace ppr::app;
 
 TEST(Techniques, ListsEveryTechniqueInUiOrder) {
-    const std::vector<std::string> expected = {"ppr", "ssr-brute", "ssr-lowq", "ssr-hiz", "ssr-linear", "planar", "floor", "none"};
+    const std::vector<std::string> expected = {"ppr", "ssr-brute", "ssr-lowq", "ssr-hiz", "ssr-linear", "planar", "raytraced", "floor", "none"};
     EXPECT_EQ(techniqueNames(), expected);
     EXPECT_TRUE(isTechnique("ssr-linear"));
     EXPECT_FALSE(isTechnique("ssr"));

@@ -1,0 +1,46 @@
+#include "techniques/raytraced_technique.hpp"
+
+namespace ppr::app {
+
+bool RaytracedTechnique::prepare() {
+    if (!services_.ctx.rayQuery().available) return false;
+    if (!pass_) pass_ = std::make_unique<passes::RaytracePass>(services_.ctx, services_.scene);
+    if (!structures_) structures_ = std::make_unique<gpu::SceneAccelerationStructures>(services_.ctx, services_.scene);
+    return true;
+}
+
+passes::RaytraceInputs RaytracedTechnique::inputs(const TechniqueFrame& f) const {
+    passes::RaytraceInputs rt;
+    rt.depth = f.gbuffer.depth;
+    rt.shadowMap = f.shadowMap;
+    rt.reflectors = f.reflectorData();
+    rt.tlas = structures_->tlas();
+    return rt;
+}
+
+std::optional<graph::ImageHandle> RaytracedTechnique::addReference(TechniqueFrame& f) {
+    if (!prepare()) return std::nullopt;
+    return pass_->addScreen(f.graph, f.in, inputs(f), f.gbuffer, f.settings.ppr.normalMap != NormalMap::Off);
+}
+
+std::optional<graph::ImageHandle> RaytracedTechnique::addReflection(TechniqueFrame& f) {
+    if (!prepare()) return std::nullopt;
+    const passes::RaytraceInputs rt = inputs(f);
+    const graph::ImageHandle reflection = pass_->addScreen(f.graph, f.in, rt, f.gbuffer, f.settings.ppr.normalMap != NormalMap::Off);
+    // Glass panes: the atlas layout PPR and the planar reference use this frame.
+    FrameServices& s = f.services;
+    s.glass.pack(f.slot, f.settings.glass, s.reflectors, s.constants.main().viewProj, f.camera.position, f.in.extent);
+    const std::optional<GlassStats>& stats = s.glass.stats(f.slot);
+    if (!stats || stats->regions() == 0) return reflection;
+    const passes::GlassRegionBuffers regions = s.glass.upload(f.graph);
+    passes::RaytraceGlass glass;
+    glass.regions = regions.table;
+    glass.regionList = regions.list;
+    glass.regionCount = stats->regions();
+    glass.atlasSize = stats->atlasSize;
+    glass.usedHeight = stats->usedHeight();
+    f.board.put(passes::GlassReflection{pass_->addGlass(f.graph, f.in, rt, glass), regions.table});
+    return reflection;
+}
+
+}  // namespace ppr::app

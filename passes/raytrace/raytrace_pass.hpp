@@ -1,0 +1,43 @@
+#pragma once
+// The ray-traced reference's passes (technique `raytraced`): compute shaders with ray queries against
+// the scene's TLAS (gpu/acceleration_structures.hpp), hits shaded with the lighting pass's code.
+//   raytraced.reflect      every reflector pixel's mirror ray → the reflection image (common/reflection.h)
+//   raytraced.glass.clear  the glass reflection atlas cleared to "no reflection"
+//   raytraced.glass        every glass pane's atlas texel's mirror ray → the atlas (PPR's / planar's layout)
+#include "common/frame_inputs.hpp"
+#include "gbuffer/gbuffer_pass.hpp"
+#include "graph/graph.hpp"
+
+namespace ppr::passes {
+
+// What every ray-traced pass reads besides its own inputs.
+struct RaytraceInputs {
+    graph::ImageHandle depth;      // the main view's depth (visibility of hits in the main view)
+    graph::ImageHandle shadowMap;  // the lighting pass's shadow map
+    VkBuffer reflectors = VK_NULL_HANDLE;  // this frame slot's ReflectorData[]
+    VkAccelerationStructureKHR tlas = VK_NULL_HANDLE;
+};
+
+// This frame's glass atlas layout (glass_reflect/glass_regions.hpp).
+struct RaytraceGlass {
+    graph::BufferHandle regions, regionList;
+    uint32_t regionCount = 0, atlasSize = 0, usedHeight = 0;
+};
+
+class RaytracePass {
+public:
+    static constexpr VkFormat kReflectionFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+    RaytracePass(const vk::Context& ctx, const gpu::GpuScene& scene);
+    // "raytraced.reflect": the reflection of every reflector pixel; `normalMapped` reflects about the
+    // G-buffer's normal instead of the reflector's plane.
+    graph::ImageHandle addScreen(graph::RenderGraph& g, const FrameInputs& in, const RaytraceInputs& rt, const GBuffer& gb,
+                                 bool normalMapped) const;
+    // "raytraced.glass.clear" + "raytraced.glass": the panes' reflections in the atlas layout.
+    graph::ImageHandle addGlass(graph::RenderGraph& g, const FrameInputs& in, const RaytraceInputs& rt, const RaytraceGlass& glass) const;
+
+private:
+    const vk::Context& ctx_;
+    shader::Pipeline screen_, glass_;
+};
+
+}  // namespace ppr::passes
