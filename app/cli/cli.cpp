@@ -31,6 +31,32 @@ const std::vector<std::string>& benchSweepNames() {
     return names;
 }
 
+TechniqueVariant parseTechniqueVariant(const std::string& text) {
+    TechniqueVariant v;
+    const size_t at = text.find('@');
+    v.name = text.substr(0, at);
+    if (!isTechnique(v.name)) {
+        std::string list;
+        for (const std::string& s : techniqueNames()) list += (list.empty() ? "" : ", ") + s;
+        throw std::runtime_error("--technique " + text + ": '" + v.name + "' is not available in this build (available: " + list + ")");
+    }
+    if (at == std::string::npos) return v;
+    Settings check;
+    size_t start = at + 1;
+    while (start <= text.size()) {
+        const size_t comma = std::min(text.find(',', start), text.size());
+        const std::string kv = text.substr(start, comma - start);
+        try {
+            check.apply(kv);
+        } catch (const std::exception& e) {
+            throw std::runtime_error("--technique " + text + ": " + e.what());
+        }
+        v.sets.push_back(kv);
+        start = comma + 1;
+    }
+    return v;
+}
+
 static std::string referenceNames() {
     std::string list;
     for (const TechniqueDesc& t : techniqueTable())
@@ -52,7 +78,8 @@ std::string usage() {
            "                       capture: default = every named camera; view: the first one\n"
            "  --size WxH           default 1280x720 (16..8192 per side; ppr: at most " + std::to_string(gpu::kPprMaxExtent) +
            ", its offsets are 12-bit)\n"
-           "  --technique T        compare and bench: repeatable; one of\n" +
+           "  --technique T[@key=value,...]   compare and bench: repeatable; T one of the list below, with its own\n"
+           "                       settings after @ (e.g. ppr@normalmap=off, a row of its own)\n" +
            techniquesUsage() +
            "  --reference R        compare: what the techniques are scored against, one of " + referenceNames() +
            " (default planar)\n"
@@ -112,11 +139,7 @@ Options parseCommandLine(int argc, const char* const* argv) {
         }
         else if (a == "--technique") {
             o.technique = value(a);
-            if (!isTechnique(o.technique)) {
-                std::string list;
-                for (const std::string& s : techniqueNames()) list += (list.empty() ? "" : ", ") + s;
-                throw std::runtime_error("--technique " + o.technique + ": not available in this build (available: " + list + ")");
-            }
+            parseTechniqueVariant(o.technique);  // validates the name and any @key=value overrides
             o.techniques.push_back(o.technique);
         } else if (a == "--size") {
             std::string s = value(a);
@@ -134,8 +157,10 @@ Options parseCommandLine(int argc, const char* const* argv) {
     }
     if (o.mode == Mode::Bench && o.sweeps.empty()) o.sweeps = benchSweepNames();
     if (o.mode == Mode::Compare && o.techniques.empty()) o.techniques = {"ppr"};
-    auto listsPpr = [&] { return std::find(o.techniques.begin(), o.techniques.end(), "ppr") != o.techniques.end(); };
-    bool usesPpr = o.technique == "ppr";
+    auto listsPpr = [&] {
+        return std::any_of(o.techniques.begin(), o.techniques.end(), [](const std::string& t) { return parseTechniqueVariant(t).name == "ppr"; });
+    };
+    bool usesPpr = parseTechniqueVariant(o.technique).name == "ppr";
     if (o.mode == Mode::Compare) usesPpr = listsPpr();
     // bench: the reflector and coverage sweeps always run PPR; the techniques sweep runs all by default.
     if (o.mode == Mode::Bench) usesPpr = o.techniques.empty() || listsPpr() || o.sweeps != std::vector<std::string>{"techniques"};

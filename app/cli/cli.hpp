@@ -33,6 +33,14 @@ struct Options {
     uint32_t warmup = 3;
 };
 
+// A technique with its own settings: "ppr@normalmap=off,holes=0" (compare and bench rows, capture).
+struct TechniqueVariant {
+    std::string name;               // a technique of the table
+    std::vector<std::string> sets;  // "key=value" applied over the --set values
+};
+// Throws std::runtime_error naming the technique or the setting that is wrong.
+TechniqueVariant parseTechniqueVariant(const std::string& text);
+
 // `ppr bench --sweep` names.
 const std::vector<std::string>& benchSweepNames();
 

@@ -52,6 +52,14 @@ FloatImage emptyReflection(VkExtent2D extent) {  // technique `none`: no reflect
     return f;
 }
 
+// "ppr@normalmap=off,holes=0" → "ppr_normalmap-off_holes-0": a variant's name as a file name.
+std::string fileName(std::string t) {
+    for (char& c : t)
+        if (c == '@' || c == ',') c = '_';
+        else if (c == '=') c = '-';
+    return t;
+}
+
 std::string fixed(double v, int digits) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.*f", digits, v);
@@ -103,14 +111,19 @@ int runCompare(const Options& o) {
         metrics["techniques"] = nlohmann::json::object();
         std::vector<ContactTile> finals, reflections, errors;
         for (const std::string& t : o.techniques) {
-            headless.setTechnique(t);
+            const TechniqueVariant variant = parseTechniqueVariant(t);
+            const Settings shared = headless.settings();
+            for (const std::string& kv : variant.sets) headless.settings().apply(kv);
+            headless.setTechnique(variant.name);
             const CaptureResult r = headless.capture(cam.pose, extent, frames, false, true);
+            headless.settings() = shared;
             if (!r.warning.empty()) std::fprintf(stderr, "ppr: warning: %s\n", r.warning.c_str());
             const FloatImage reflection = r.reflection.rgba.empty() ? emptyReflection(extent) : r.reflection;
             const ReflectionScore s = scoreReflection(reflection, ref.reflection, exposure);
             const double psnr = compositedPsnrDb(r.image, ref.image, ref.reflection);
-            const double ms = techniqueMs(t, r);
-            const std::string finalFile = "final_" + t + ".png", reflFile = "reflection_" + t + ".png", errFile = "error_" + t + ".png";
+            const double ms = techniqueMs(variant.name, r);
+            const std::string finalFile = "final_" + fileName(t) + ".png", reflFile = "reflection_" + fileName(t) + ".png",
+                              errFile = "error_" + fileName(t) + ".png";
             const util::Rgba8Image heat = errorHeatMap(reflection, ref.reflection, exposure, r.image);
             util::writePng((dir / finalFile).string(), r.image);
             util::writePng((dir / reflFile).string(), reflectionDisplayImage(reflection, exposure));

@@ -44,8 +44,9 @@ bool projectToScreen(vec3 p, out vec2 pixel, out float w) {
 // The bonus slides' normal-map approximation. The flat reflection found the reflected point at
 // `flatSource` (pixels); its distance from the surface point stands for the distance along the ray
 // reflected about the normal-mapped normal. approx: the point that far along that ray, projected.
-// raymarch: kPprNormalTaps points between the surface and that point, nearest first; the first one
-// that lies behind the depth buffer (by at most a step) is the hit. False: keep the flat reflection.
+// raymarch: kPprNormalTaps points from there back toward the reflecting pixel; the first one not
+// hidden behind the depth buffer is taken (an approximated point behind a nearer object would fetch
+// that object: the disocclusion the slides show). False: keep the flat reflection.
 bool normalMappedHit(vec3 surface, vec3 dir, vec2 flatSource, out vec2 hitPixel) {
     ivec2 src = clamp(ivec2(flatSource), ivec2(0), ivec2(frame.screenSize) - 1);
     float srcDepth = texelFetch(depthTex, src, 0).r;
@@ -54,12 +55,12 @@ bool normalMappedHit(vec3 surface, vec3 dir, vec2 flatSource, out vec2 hitPixel)
     float w;
     if ((pc.flags & kPprNormalRaymarch) == 0u) return projectToScreen(surface + dir * dist, hitPixel, w);
     float step = dist / float(kPprNormalTaps);
-    for (uint k = 1u; k <= kPprNormalTaps; ++k) {
+    for (uint k = 0u; k < kPprNormalTaps; ++k) {
         vec2 p;
-        if (!projectToScreen(surface + dir * (step * float(k)), p, w)) return false;
+        if (!projectToScreen(surface + dir * (dist - step * float(k)), p, w)) continue;
         float d = texelFetch(depthTex, ivec2(p), 0).r;
         float s = d > 0.0 ? frame.cameraPos.w / d : 1e30;
-        if (w >= s && w <= s + step) {
+        if (w <= s * 1.001) {  // in front of (or on) what the camera sees there
             hitPixel = p;
             return true;
         }
