@@ -141,8 +141,12 @@ private:
         std::map<std::string, Measured> measured;
         for (const std::string& t : list) {
             progress_->step("technique " + t + " on " + cam.name);
-            rig.headless->setTechnique(t);
+            const TechniqueVariant variant = parseTechniqueVariant(t);
+            const Settings shared = rig.headless->settings();
+            for (const std::string& kv : variant.sets) rig.headless->settings().apply(kv);
+            rig.headless->setTechnique(variant.name);
             measured[t] = measure(rig, cam.pose, true);
+            rig.headless->settings() = shared;
         }
         const Measured& reference = measured.at("planar");
         for (const std::string& t : techniqueList()) {
@@ -152,9 +156,10 @@ private:
             row.passMs = m.passMs;
             row.passOrder = m.last.passOrder;
             row.frameMs = m.frameMs;
-            row.techniqueMs = techniqueCost(t, m.passMs);
+            const std::string name = parseTechniqueVariant(t).name;
+            row.techniqueMs = techniqueCost(name, m.passMs);
             for (const auto& [pass, ms] : m.passMs)
-                if (isTechniquePass(t, pass)) row.costPasses.insert(pass);
+                if (isTechniquePass(name, pass)) row.costPasses.insert(pass);
             if (t != "planar") {
                 FloatImage reflection = m.last.reflection;
                 if (reflection.rgba.empty()) {  // no reflection image (none): no reflection anywhere

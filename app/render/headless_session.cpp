@@ -16,8 +16,10 @@ HeadlessSession::HeadlessSession(const Options& o) : options(o) {
     renderer = std::make_unique<Renderer>(*ctx, scene);
     headless = std::make_unique<HeadlessRenderer>(*ctx, *renderer);
     for (const std::string& kv : o.sets) headless->settings().apply(kv);
+    // capture renders one technique, with its own settings if it names any; compare sets each row's.
     const TechniqueVariant variant = parseTechniqueVariant(o.technique);
-    for (const std::string& kv : variant.sets) headless->settings().apply(kv);
+    if (o.mode != Mode::Compare)
+        for (const std::string& kv : variant.sets) headless->settings().apply(kv);
     headless->setTechnique(variant.name);
     extent = {o.width, o.height};
     // A technique this device cannot run is refused before anything renders (one line, exit non-zero).
