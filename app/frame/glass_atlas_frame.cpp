@@ -46,4 +46,13 @@ uint32_t GlassAtlasFrame::pack(uint32_t slot, const GlassSettings& settings, con
     return atlasSize;
 }
 
+std::optional<GlassRegionsBound> GlassAtlasFrame::packAndUpload(graph::RenderGraph& g, uint32_t slot, const GlassSettings& settings,
+                                                                 const ReflectorSet& reflectors, const glm::mat4& viewProj,
+                                                                 const glm::vec3& eye, VkExtent2D extent) {
+    pack(slot, settings, reflectors, viewProj, eye, extent);
+    const std::optional<GlassStats>& s = stats_[slot];
+    if (!s || s->regions() == 0) return std::nullopt;
+    return GlassRegionsBound{upload(g), s->regions(), s->atlasSize, s->usedHeight()};
+}
+
 }  // namespace ppr::app

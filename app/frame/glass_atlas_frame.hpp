@@ -28,6 +28,12 @@ struct GlassStats {
     std::string overflowMessage() const;
 };
 
+// A packed frame's regions as the glass passes bind them, the table uploaded.
+struct GlassRegionsBound {
+    passes::GlassRegionBuffers buffers;
+    uint32_t count = 0, atlasSize = 0, usedHeight = 0;
+};
+
 class GlassAtlasFrame {
 public:
     explicit GlassAtlasFrame(uint32_t framesInFlight) : stats_(framesInFlight) {}
@@ -40,6 +46,10 @@ public:
                   const glm::vec3& eye, VkExtent2D extent);
     // The region table's upload pass; its buffers are read by every glass consumer of the frame.
     passes::GlassRegionBuffers upload(graph::RenderGraph& g) const { return table_.add(g); }
+    // pack, then (when a pane got a region) upload: what a reference technique needs to resolve glass.
+    std::optional<GlassRegionsBound> packAndUpload(graph::RenderGraph& g, uint32_t slot, const GlassSettings& settings,
+                                                   const ReflectorSet& reflectors, const glm::mat4& viewProj, const glm::vec3& eye,
+                                                   VkExtent2D extent);
     const std::optional<GlassStats>& stats(uint32_t slot) const { return stats_[slot]; }
 
 private:

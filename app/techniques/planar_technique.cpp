@@ -10,23 +10,22 @@ std::optional<graph::ImageHandle> PlanarTechnique::addReference(TechniqueFrame& 
 std::optional<graph::ImageHandle> PlanarTechnique::addReflection(TechniqueFrame& f) {
     FrameServices& s = f.services;
     const std::vector<passes::PlanarView>& views = s.constants.mirroredViews(s.reflectors);
-    s.glass.pack(f.slot, f.settings.glass, s.reflectors, s.constants.main().viewProj, f.camera.position, f.in.extent);
-    const std::optional<GlassStats>& stats = s.glass.stats(f.slot);
-    if (!stats || stats->regions() == 0) return pass_.add(f.graph, f.in, f.gbuffer, f.shadowMap, views, f.reflectorData());
-    const passes::GlassRegionBuffers regions = s.glass.upload(f.graph);
+    const std::optional<GlassRegionsBound> bound =
+        s.glass.packAndUpload(f.graph, f.slot, f.settings.glass, s.reflectors, s.constants.main().viewProj, f.camera.position, f.in.extent);
+    if (!bound) return pass_.add(f.graph, f.in, f.gbuffer, f.shadowMap, views, f.reflectorData());
     passes::PlanarGlass glass;
-    glass.regions = regions.table;
-    glass.regionList = regions.list;
-    glass.regionCount = stats->regions();
-    glass.atlasSize = stats->atlasSize;
-    glass.usedHeight = stats->usedHeight();
+    glass.regions = bound->buffers.table;
+    glass.regionList = bound->buffers.list;
+    glass.regionCount = bound->count;
+    glass.atlasSize = bound->atlasSize;
+    glass.usedHeight = bound->usedHeight;
     const scene::ReflectorGroups& groups = s.reflectors.buffer().groups();
     glassPlaneGroups_.assign(groups.planeGroupCount, false);
-    for (const scene::GlassRegion& r : stats->layout) glassPlaneGroups_[groups.planeGroup[r.reflectorIndex]] = true;
+    for (const scene::GlassRegion& r : s.glass.stats(f.slot)->layout) glassPlaneGroups_[groups.planeGroup[r.reflectorIndex]] = true;
     glass.planeGroups = &glassPlaneGroups_;
     graph::ImageHandle glassAtlas;
     const graph::ImageHandle reflection = pass_.add(f.graph, f.in, f.gbuffer, f.shadowMap, views, f.reflectorData(), &glass, &glassAtlas);
-    f.board.put(passes::GlassReflection{glassAtlas, regions.table});
+    f.board.put(passes::GlassReflection{glassAtlas, bound->buffers.table});
     return reflection;
 }
 

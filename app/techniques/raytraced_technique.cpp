@@ -29,17 +29,16 @@ std::optional<graph::ImageHandle> RaytracedTechnique::addReflection(TechniqueFra
     const graph::ImageHandle reflection = pass_->addScreen(f.graph, f.in, rt, f.gbuffer, f.settings.ppr.normalMap != NormalMap::Off);
     // Glass panes: the atlas layout PPR and the planar reference use this frame.
     FrameServices& s = f.services;
-    s.glass.pack(f.slot, f.settings.glass, s.reflectors, s.constants.main().viewProj, f.camera.position, f.in.extent);
-    const std::optional<GlassStats>& stats = s.glass.stats(f.slot);
-    if (!stats || stats->regions() == 0) return reflection;
-    const passes::GlassRegionBuffers regions = s.glass.upload(f.graph);
+    const std::optional<GlassRegionsBound> bound =
+        s.glass.packAndUpload(f.graph, f.slot, f.settings.glass, s.reflectors, s.constants.main().viewProj, f.camera.position, f.in.extent);
+    if (!bound) return reflection;
     passes::RaytraceGlass glass;
-    glass.regions = regions.table;
-    glass.regionList = regions.list;
-    glass.regionCount = stats->regions();
-    glass.atlasSize = stats->atlasSize;
-    glass.usedHeight = stats->usedHeight();
-    f.board.put(passes::GlassReflection{pass_->addGlass(f.graph, f.in, rt, glass), regions.table});
+    glass.regions = bound->buffers.table;
+    glass.regionList = bound->buffers.list;
+    glass.regionCount = bound->count;
+    glass.atlasSize = bound->atlasSize;
+    glass.usedHeight = bound->usedHeight;
+    f.board.put(passes::GlassReflection{pass_->addGlass(f.graph, f.in, rt, glass), bound->buffers.table});
     return reflection;
 }
 

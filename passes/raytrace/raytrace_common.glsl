@@ -50,21 +50,7 @@ float clipT(ReflectorData r, vec3 origin, vec3 dir) {
     return max((kRaytraceClipOffset - dot(origin - r.center, r.normal)) / dot(dir, r.normal), 0.0);
 }
 
-// The planar reference's "visible in the main view": faces the main camera, projects on screen, and is
-// the surface the main view shows there (within its tolerance).
-bool visibleInMainView(vec3 p, vec3 n) {
-    vec3 eye = frame.cameraPos.xyz;
-    if (dot(n, eye - p) <= 0.0) return false;
-    vec4 clip = frame.viewProj * vec4(p, 1.0);
-    if (clip.w <= 0.0) return false;
-    vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
-    if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) return false;
-    ivec2 q = ivec2(uv * frame.screenSize);
-    float depth = texelFetch(depthTex, q, 0).r;
-    if (depth <= 0.0) return false;
-    vec3 seen = worldFromDepth((vec2(q) + 0.5) * frame.invScreenSize, depth);
-    return distance(seen, p) <= kPlanarVisibleTolerance + kPlanarVisibleTolerancePerMetre * distance(eye, p);
-}
+#include "planar/main_view.glsl"
 
 // The reflector id (index + 1, 0 = none) of a hit surface, as a G-buffer rendered from the mirrored eye
 // would write it: the draw's binding, else a loose reflector whose rectangle holds the point
@@ -248,7 +234,7 @@ vec4 shadeHit(ReflectorData plane, vec3 n, ivec2 pix, vec3 origin, vec3 dir, flo
     vec3 color = shadeSurface(hit, shadingNormal, -dir, albedo, roughness, metallic, shadow);
     float kind = kReflectionOffscreen;
     if (hitReflectorId(draw, hit, eyeDistance + t) != 0u) kind = kReflectionSecondary;
-    else if (visibleInMainView(hit, sn)) kind = kReflectionHit;
+    else if (visibleInMainView(depthTex, hit, sn)) kind = kReflectionHit;
     return vec4(color, kind);
 }
 
