@@ -141,10 +141,7 @@ private:
         std::map<std::string, Measured> measured;
         for (const std::string& t : list) {
             progress_->step("technique " + t + " on " + cam.name);
-            const TechniqueVariant variant = parseTechniqueVariant(t);
-            const Settings shared = rig.headless->settings();
-            for (const std::string& kv : variant.sets) rig.headless->settings().apply(kv);
-            rig.headless->setTechnique(variant.name);
+            const Settings shared = rig.headless->setVariant(t);
             measured[t] = measure(rig, cam.pose, true);
             rig.headless->settings() = shared;
         }

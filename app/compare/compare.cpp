@@ -111,17 +111,14 @@ int runCompare(const Options& o) {
         metrics["techniques"] = nlohmann::json::object();
         std::vector<ContactTile> finals, reflections, errors;
         for (const std::string& t : o.techniques) {
-            const TechniqueVariant variant = parseTechniqueVariant(t);
-            const Settings shared = headless.settings();
-            for (const std::string& kv : variant.sets) headless.settings().apply(kv);
-            headless.setTechnique(variant.name);
+            const Settings shared = headless.setVariant(t);
             const CaptureResult r = headless.capture(cam.pose, extent, frames, false, true);
             headless.settings() = shared;
             if (!r.warning.empty()) std::fprintf(stderr, "ppr: warning: %s\n", r.warning.c_str());
             const FloatImage reflection = r.reflection.rgba.empty() ? emptyReflection(extent) : r.reflection;
             const ReflectionScore s = scoreReflection(reflection, ref.reflection, exposure);
             const double psnr = compositedPsnrDb(r.image, ref.image, ref.reflection);
-            const double ms = techniqueMs(variant.name, r);
+            const double ms = techniqueMs(headless.technique(), r);
             const std::string finalFile = "final_" + fileName(t) + ".png", reflFile = "reflection_" + fileName(t) + ".png",
                               errFile = "error_" + fileName(t) + ".png";
             const util::Rgba8Image heat = errorHeatMap(reflection, ref.reflection, exposure, r.image);

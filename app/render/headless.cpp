@@ -1,5 +1,6 @@
 #include "render/headless.hpp"
 
+#include "cli/cli.hpp"
 #include "techniques/technique_table.hpp"
 
 #include "hiz/hiz.h"
@@ -17,6 +18,14 @@ double median(std::vector<double> v) {
 }
 
 void HeadlessRenderer::setTechnique(const std::string& technique) { technique_ = techniqueDesc(technique).name; }
+
+Settings HeadlessRenderer::setVariant(const std::string& text) {
+    const TechniqueVariant variant = parseTechniqueVariant(text);
+    Settings before = settings_;
+    for (const std::string& kv : variant.sets) settings_.apply(kv);
+    setTechnique(variant.name);
+    return before;
+}
 
 HeadlessRenderer::HeadlessRenderer(const vk::Context& ctx, Renderer& renderer) : ctx_(ctx), renderer_(renderer), abTaps_(ctx) {
     VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};

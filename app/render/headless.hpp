@@ -56,6 +56,9 @@ public:
     const std::string& technique() const { return technique_; }
     Settings& settings() { return settings_; }
     const Settings& settings() const { return settings_; }
+    // A table row with its own settings ("ppr@normalmap=off"): sets the technique, applies the
+    // settings over the current ones and returns those, for the caller to restore after its captures.
+    Settings setVariant(const std::string& variant);
     // The reference A/B compares with (default planar).
     void setReference(const std::string& reference) { reference_ = reference; }
     // The viewer's A/B view for the following captures (tests).

@@ -259,6 +259,17 @@ PushDescriptors& PushDescriptors::uniformBuffer(VkBuffer buffer, VkDeviceSize of
     return *this;
 }
 
+PushDescriptors& PushDescriptors::accelerationStructure(VkAccelerationStructureKHR tlas) {
+    VkWriteDescriptorSet& w = next(VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR);
+    structures_[w.dstBinding] = tlas;
+    VkWriteDescriptorSetAccelerationStructureKHR& as = structureWrites_[w.dstBinding];
+    as = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
+    as.accelerationStructureCount = 1;
+    as.pAccelerationStructures = &structures_[w.dstBinding];
+    w.pNext = &as;
+    return *this;
+}
+
 void PushDescriptors::push(VkCommandBuffer cmd, const Pipeline& pipeline) {
     VkDescriptorType given[kMax];
     for (uint32_t i = 0; i < count_; ++i) given[i] = writes_[i].descriptorType;

@@ -111,6 +111,7 @@ public:
     PushDescriptors& storageImage(VkImageView view);
     PushDescriptors& storageBuffer(VkBuffer buffer, VkDeviceSize offset = 0, VkDeviceSize range = VK_WHOLE_SIZE);
     PushDescriptors& uniformBuffer(VkBuffer buffer, VkDeviceSize offset, VkDeviceSize range);
+    PushDescriptors& accelerationStructure(VkAccelerationStructureKHR tlas);  // ray queries
     void push(VkCommandBuffer cmd, const Pipeline& pipeline);
 
 private:
@@ -119,6 +120,8 @@ private:
     VkWriteDescriptorSet writes_[kMax]{};
     VkDescriptorImageInfo images_[kMax]{};
     VkDescriptorBufferInfo buffers_[kMax]{};
+    VkAccelerationStructureKHR structures_[kMax]{};
+    VkWriteDescriptorSetAccelerationStructureKHR structureWrites_[kMax]{};
     uint32_t count_ = 0;
     VkWriteDescriptorSet& next(VkDescriptorType type);
 };
