@@ -1,6 +1,7 @@
 #pragma once
 // What the trunk and the techniques publish on a frame's blackboard (graph::Blackboard), one struct
 // per meaning. Taps (readbacks, pick, A/B, overlay) find what they read here.
+#include "common/environment.hpp"
 #include "gbuffer/gbuffer_pass.hpp"
 #include "glass_forward/glass_forward_pass.hpp"
 #include "graph/blackboard.hpp"
@@ -22,6 +23,9 @@ struct ShownReflection {  // what the composite blends: the technique's, or A/B'
 };
 struct DepthHierarchy {  // when the frame built one (ssr-hiz, PPR's fallback)
     passes::HizAtlas atlas;
+};
+struct EnvironmentBound {  // when a technique falls back to the environment (TechniqueFrame::environment)
+    passes::Environment environment;
 };
 struct HdrColor {  // composited scene with glass, before tonemapping
     graph::ImageHandle image;

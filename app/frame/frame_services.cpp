@@ -34,6 +34,15 @@ passes::HizAtlas TechniqueFrame::depthHierarchy() {
     return hiz;
 }
 
+passes::Environment TechniqueFrame::environment() {
+    if (const EnvironmentBound* bound = board.find<EnvironmentBound>()) return bound->environment;
+    const bool probe = settings.env.fallback && settings.env.source == EnvSource::Probe;
+    if (probe) services.environment.prepare(in, services.constants.main(), services.reflectors.list(), settings.view.shadowRes);
+    const passes::Environment env = services.environment.bind(graph, settings.env.fallback, probe);
+    board.put(EnvironmentBound{env});
+    return env;
+}
+
 passes::TileLists TechniqueFrame::classifyTiles(uint32_t maxReflectorId) {
     return services.tileClassify.add(graph, in, gbuffer, services.stats.import(graph, slot), maxReflectorId);
 }

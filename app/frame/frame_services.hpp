@@ -1,8 +1,10 @@
 #pragma once
 // What the trunk shares with the technique modules: the device, the GPU scene, the reflector set, the
 // frame constants (with mirrored views on request), the glass atlas, the tile-classification and
-// depth-hierarchy passes more than one technique uses, and the per-slot PPR counters buffer.
+// depth-hierarchy passes more than one technique uses, the per-slot PPR counters buffer and the
+// environment the misses fall back to (the reflection probe).
 #include "common/frame.h"
+#include "frame/environment_probe.hpp"
 #include "frame/frame_constants.hpp"
 #include "frame/frame_resources.hpp"
 #include "frame/glass_atlas_frame.hpp"
@@ -52,6 +54,7 @@ struct FrameServices {
     const passes::TileClassifyPass& tileClassify;
     const passes::HizPass& hiz;
     const passes::GlassReflectPass& glassReflect;  // PPR's glass resolve; the trunk's atlas debug view
+    EnvironmentProbe& environment;                 // --set fallback_env / env_source
 };
 
 // One technique's view of the frame being recorded.
@@ -72,6 +75,9 @@ struct TechniqueFrame {
     passes::HizAtlas depthHierarchy();
     // Tile lists of this frame; reflector ids above maxReflectorId do not make a tile planar.
     passes::TileLists classifyTiles(uint32_t maxReflectorId);
+    // What this frame's misses fall back to (--set fallback_env, env_source), bound once a frame
+    // (published as EnvironmentBound); renders the reflection probe the first time it is asked for.
+    passes::Environment environment();
 };
 
 }  // namespace ppr::app

@@ -41,8 +41,9 @@ Renderer::Renderer(const vk::Context& ctx, const scene::Scene& scene) : ctx_(ctx
     constants_ = std::make_unique<FrameConstantsBuffer>(ctx, samplers_, *gpuScene_, kFramesInFlight);
     glass_ = std::make_unique<GlassAtlasFrame>(kFramesInFlight);
     stats_ = std::make_unique<FrameStatsBuffers>(ctx, kFramesInFlight);
+    environment_ = std::make_unique<EnvironmentProbe>(ctx, *gpuScene_, *shadow_, *gbuffer_, *lighting_);
     services_.reset(new FrameServices{ctx, *gpuScene_, *gbuffer_, *lighting_, *reflectors_, *constants_, *glass_, *stats_, *tileClassify_,
-                                      *hiz_, *glassReflect_});
+                                      *hiz_, *glassReflect_, *environment_});
     for (const TechniqueDesc& t : techniqueTable()) modules_.push_back(t.make ? t.make(*services_) : nullptr);
     executor_ = std::make_unique<graph::GraphExecutor>(ctx, kFramesInFlight);
     setReflectors(scene.reflectors);
@@ -53,6 +54,7 @@ Renderer::~Renderer() {
     executor_.reset();
     modules_.clear();
     services_.reset();
+    environment_.reset();
     stats_.reset();
     glass_.reset();
     constants_.reset();

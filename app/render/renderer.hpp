@@ -64,6 +64,9 @@ public:
     // Glass atlas counters of the frame last recorded in `slot`, when it packed a glass atlas.
     const std::optional<GlassStats>& glassStats(uint32_t slot) const { return glass_->stats(slot); }
 
+    // The reflection probe (--set env_source=probe): how often it was rendered, its cost and placement.
+    const EnvironmentProbe& environmentProbe() const { return *environment_; }
+
     const graph::GraphExecutor& executor() const { return *executor_; }
     graph::GraphExecutor& executor() { return *executor_; }  // the viewer trims the transient pool after resizes
 
@@ -88,6 +91,7 @@ private:
     std::unique_ptr<FrameConstantsBuffer> constants_;
     std::unique_ptr<GlassAtlasFrame> glass_;
     std::unique_ptr<FrameStatsBuffers> stats_;
+    std::unique_ptr<EnvironmentProbe> environment_;
     std::unique_ptr<FrameServices> services_;
     std::vector<std::unique_ptr<Technique>> modules_;  // one per techniqueTable() row (null: none)
     std::unique_ptr<graph::GraphExecutor> executor_;

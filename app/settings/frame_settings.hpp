@@ -8,6 +8,7 @@ namespace ppr::app {
 
 enum class PprFallback : uint32_t { Ssr, None };
 enum class NormalMap : uint32_t { Off, Approx, Raymarch };
+enum class EnvSource : uint32_t { Sky, Probe };
 
 struct ViewSettings {        // owner: frame (composite, lighting, tonemap, shadow map)
     uint32_t debug;          // gpu::kDebug* (settings/debug_views.hpp)
@@ -15,7 +16,8 @@ struct ViewSettings {        // owner: frame (composite, lighting, tonemap, shad
     uint32_t shadowRes;
 };
 struct EnvSettings {         // owner: env (every technique's misses)
-    bool fallback;           // misses and screen edges fall back to the sky
+    bool fallback;           // misses and screen edges fall back to the environment
+    EnvSource source;        // what the environment is: the sky, or the reflection probe (app/frame/environment_probe.hpp)
 };
 struct TileSettings {        // owner: tiles (tile classification, used by ppr and the ssr-* techniques)
     bool indirect;           // dispatch over the tile lists (false: whole screen)

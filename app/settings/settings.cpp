@@ -131,7 +131,10 @@ const std::vector<SettingDecl>& settingDecls() {
                           "reflection distance), raymarch (4 depth-tested taps along that ray, else flat); SSR and raytraced "
                           "reflect about the mapped normal unless off"),
         toggle("fallback_env", "env", [](FrameSettings& s) -> bool& { return s.env.fallback; }, false,
-               "reflections that leave the screen or find nothing show the sky, blended in near the screen edges (0: black)"),
+               "reflections that leave the screen or find nothing show the environment (env_source), blended in near the screen edges (0: black)"),
+        choice<EnvSource>("env_source", "env", [](FrameSettings& s) -> EnvSource& { return s.env.source; }, {"sky", "probe"}, "probe",
+                          "what fallback_env=1 shows: the sky along the reflected ray, or the reflection probe (a cubemap of the lit "
+                          "scene rendered once, box-projected; the sky where it sees sky)"),
         number("ssr_distance", "ssr", [](FrameSettings& s) -> float& { return s.ssr.distance; }, 40, 0.1, 1000.0,
                "SSR: longest reflected ray, metres (all four SSR techniques and PPR's fallback)"),
         number("ssr_thickness", "ssr", [](FrameSettings& s) -> float& { return s.ssr.thickness; }, 0.05, 0.001, 100.0,

@@ -92,6 +92,7 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
     reflect.debugView = f.settings.view.debug;
     reflect.maxReflectorId = projected;
     reflect.flags = reflectFlags(f.settings);
+    reflect.environment = f.environment();
     graph::ImageHandle reflection = reflect_.add(f.graph, f.in, reflect);
     // The debug views PPR draws over the whole screen are left as they are.
     const uint32_t debug = reflect.debugView;

@@ -2,7 +2,7 @@
 
 namespace ppr::app {
 
-passes::SsrInputs ssrInputs(const TechniqueFrame& f, const passes::TileLists& tiles) {
+passes::SsrInputs ssrInputs(TechniqueFrame& f, const passes::TileLists& tiles) {
     passes::SsrInputs s;
     s.gbuffer = &f.gbuffer;
     s.sceneColor = f.lit;
@@ -14,7 +14,7 @@ passes::SsrInputs ssrInputs(const TechniqueFrame& f, const passes::TileLists& ti
     s.params.maxSteps = f.settings.ssr.steps;
     s.indirect = f.settings.tiles.indirect;
     s.mappedNormals = f.settings.ppr.normalMap != NormalMap::Off;
-    s.environment = f.settings.env.fallback;
+    s.environment = f.environment();
     return s;
 }
 

@@ -10,7 +10,7 @@
 namespace ppr::app {
 
 // The shared ray set-up of this frame (used by PPR's fallback too).
-passes::SsrInputs ssrInputs(const TechniqueFrame& frame, const passes::TileLists& tiles);
+passes::SsrInputs ssrInputs(TechniqueFrame& frame, const passes::TileLists& tiles);
 
 class SsrTechnique final : public Technique {
 public:

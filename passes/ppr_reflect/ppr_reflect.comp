@@ -24,6 +24,7 @@ layout(set = 0, binding = 8) uniform sampler2D depthTex;   // reverse-Z: near / 
 layout(set = 0, binding = 9) uniform sampler2D normalTex;  // G-buffer normal (normal-mapped)
 layout(set = 0, binding = 10, scalar) readonly buffer Reflectors { ReflectorData reflectors[]; };
 layout(push_constant, scalar) uniform Push { PprReflectPush pc; };
+#define ENV_BINDING 11  // the probe's data and cube (11, 12)
 
 uint fetchValue(ivec2 p) {
     if (any(lessThan(p, ivec2(0))) || any(greaterThanEqual(p, ivec2(frame.screenSize)))) return kPprClearValue;
@@ -32,6 +33,8 @@ uint fetchValue(ivec2 p) {
 
 #include "common/environment.glsl"
 #include "ppr_common/ppr_resolve.glsl"
+
+bool environmentUsesProbe() { return (pc.flags & kPprEnvironmentProbe) != 0u; }
 
 // Projects a world point: pixel coordinates and its view distance (w); false behind the near plane.
 bool projectToScreen(vec3 p, out vec2 pixel, out float w) {
@@ -129,7 +132,7 @@ void main() {
     vec3 dir = reflect(normalize(surface - frame.cameraPos.xyz), n);
     if (!r.valid) {  // nothing projected here: the environment, or no reflection
         bool env = (pc.flags & kPprEnvironment) != 0u;
-        imageStore(outReflection, pix, env ? vec4(environmentRadiance(dir), kReflectionEnvironment) : vec4(0.0, 0.0, 0.0, kReflectionNone));
+        imageStore(outReflection, pix, env ? vec4(environmentRadiance(surface, dir), kReflectionEnvironment) : vec4(0.0, 0.0, 0.0, kReflectionNone));
         return;
     }
     vec3 color = r.color;
@@ -139,6 +142,6 @@ void main() {
         color = textureLod(sceneLinear, hit * frame.invScreenSize, 0.0).rgb;
         seen = hit;
     }
-    if ((pc.flags & kPprEnvironment) != 0u) color = environmentBlend(color, seen, dir);
+    if ((pc.flags & kPprEnvironment) != 0u) color = environmentBlend(color, seen, surface, dir);
     imageStore(outReflection, pix, vec4(color, r.readTexel == pix ? kReflectionHit : kReflectionFilled));
 }

@@ -12,8 +12,10 @@ PPR_CONST(uint, kPprIndirect, 8u)
 // --set normalmap=approx|raymarch: the bonus slides' normal-map approximation (reflection pass only).
 PPR_CONST(uint, kPprNormalApprox, 16u)
 PPR_CONST(uint, kPprNormalRaymarch, 32u)
-// --set fallback_env=1: holes show the sky along the reflected ray; hits fade into it at the screen edge.
+// --set fallback_env=1: holes show the environment along the reflected ray; hits fade into it at the
+// screen edge. With kPprEnvironmentProbe (env_source=probe) it is the reflection probe, else the sky.
 PPR_CONST(uint, kPprEnvironment, 64u)
+PPR_CONST(uint, kPprEnvironmentProbe, 128u)
 // Taps of the normalmap=raymarch march between the pixel and the approximated reflection.
 PPR_CONST(uint, kPprNormalTaps, 4u)
 // Hole filling replaces a pixel's own data only when a neighbour's offset is this much shorter

@@ -3,6 +3,7 @@
 #include "common/clear_pass.hpp"
 #include "common/compute_pass.hpp"
 #include "common/frame.h"
+#include "env_probe/env_probe.h"
 #include "ppr_common/tiles.h"
 #include "ppr_reflect/ppr_reflect.h"
 #include "ppr_reflect_comp.h"
@@ -21,6 +22,7 @@ graph::ImageHandle PprReflectPass::add(graph::RenderGraph& g, const FrameInputs&
     push.debugView = inputs.debugView;
     push.tilesX = inputs.tiles->tilesX;
     push.maxReflectorId = inputs.maxReflectorId;
+    if ((push.flags & gpu::kPprEnvironment) && inputs.environment.probe) push.flags |= gpu::kPprEnvironmentProbe;
     // The debug views that draw outside reflector pixels need the whole screen.
     if (inputs.debugView == gpu::kDebugIntermediate || inputs.debugView == gpu::kDebugTiles) push.flags &= ~gpu::kPprIndirect;
     const bool indirect = (push.flags & gpu::kPprIndirect) != 0;
@@ -44,6 +46,8 @@ graph::ImageHandle PprReflectPass::add(graph::RenderGraph& g, const FrameInputs&
         .sampled(inputs.depth, in.samplers->nearestClamp)
         .sampled(inputs.normal, in.samplers->nearestClamp)
         .hostStorage(inputs.reflectors)
+        .uniform(inputs.environment.probeData, 0, sizeof(gpu::EnvProbeData))
+        .sampled(inputs.environment.probeCube, in.samplers->linearClamp)
         .push(push);
     if (indirect) pass.dispatchIndirect(inputs.tiles->args, sizeof(gpu::TileDispatchArgs) * gpu::kTileClassPlanar);
     else pass.dispatch(in.extent, gpu::kPprTileSize);

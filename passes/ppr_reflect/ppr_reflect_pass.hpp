@@ -1,5 +1,6 @@
 #pragma once
 // PPR reflection pass (ppr_reflect.comp): intermediate buffer + lit scene → reflection image.
+#include "common/environment.hpp"
 #include "common/frame_inputs.hpp"
 #include "graph/graph.hpp"
 #include "tile_classify/tile_classify_pass.hpp"
@@ -17,6 +18,7 @@ struct PprReflectInputs {
     uint32_t flags = 0;           // ppr_reflect.h kPpr* toggles; kPprIndirect dispatches over the planar tiles
     uint32_t debugView = 0;       // frame.h kDebug* (intermediate, holes and tiles draw here)
     uint32_t maxReflectorId = 0;  // ids above this get no reflection (beyond PPR's budget)
+    Environment environment;      // what holes show with kPprEnvironment (the probe adds kPprEnvironmentProbe)
 };
 
 class PprReflectPass {

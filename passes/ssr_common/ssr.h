@@ -15,7 +15,8 @@
 PPR_CONST(uint, kSsrIndirect, 1u)     // dispatched over tile list `listClass` (ppr_common/tiles.h)
 PPR_CONST(uint, kSsrWriteAll, 2u)     // whole-screen dispatch into a fresh image: write every pixel
 PPR_CONST(uint, kSsrMappedNormals, 4u)  // reflector pixels reflect about the normal-mapped normal (--set normalmap)
-PPR_CONST(uint, kSsrEnvironment, 8u)    // misses show the sky, hits fade into it at the border (--set fallback_env)
+PPR_CONST(uint, kSsrEnvironment, 8u)    // misses show the environment, hits fade into it at the border (--set fallback_env)
+PPR_CONST(uint, kSsrEnvironmentProbe, 16u)  // ... and the environment is the reflection probe (env_source=probe), else the sky
 // Pixel classes shaded (SsrPush::pixelClasses): bit kTileClassPlanar = reflector-rectangle pixels,
 // bit kTileClassOther = reflective pixels no rectangle covers (rough or curved surfaces).
 

@@ -2,7 +2,8 @@
 // result. A technique includes this and defines
 //     bool ssrTrace(SsrRay ray, out vec2 hitPixel);
 // returning the pixel (centre coordinates) whose lit colour the ray reflects, or false for a miss.
-// Define SSR_USES_HIZ before including to bind the depth hierarchy (binding 9).
+// Bindings 9 and 10 are the environment's (common/environment.glsl); define SSR_USES_HIZ before
+// including to bind the depth hierarchy (binding 11).
 #include "common/bindings.glsl"
 #include "common/brdf.glsl"
 #include "common/reflection.h"
@@ -20,10 +21,13 @@ layout(set = 0, binding = 6, scalar) readonly buffer Reflectors { ReflectorData 
 layout(set = 0, binding = 7, scalar) readonly buffer TileLists { uint tileLists[]; };
 layout(set = 0, binding = 8, rgba16f) uniform image2D outReflection;
 #ifdef SSR_USES_HIZ
-layout(set = 0, binding = 9, r32f) uniform readonly image2D hizAtlas;
+layout(set = 0, binding = 11, r32f) uniform readonly image2D hizAtlas;
 #endif
 layout(push_constant, scalar) uniform Push { SsrPush pc; };
+#define ENV_BINDING 9  // the probe's data and cube (9, 10)
 #include "common/environment.glsl"
+
+bool environmentUsesProbe() { return (pc.flags & kSsrEnvironmentProbe) != 0u; }
 
 // The reflected ray. View space looks down −Z; `k` is 1/w = 1/view distance, affine along the
 // screen-space segment, so the distance at a fraction t of it is 1 / mix(k0, k1, t).
@@ -31,6 +35,7 @@ struct SsrRay {
     vec3 viewOrigin, viewEnd;  // view space; the end clipped at the near plane (not at the screen)
     vec2 p0, p1;               // pixels; p1 clipped to the screen
     float k0, k1;              // 1/distance at p0 and p1
+    vec3 worldOrigin;          // the reflecting surface point (world space; the environment's box projection)
     vec3 worldDir;             // the reflected direction (world space)
 };
 
@@ -86,6 +91,7 @@ bool ssrSetupRay(ivec2 pix, float depth, uint reflectorId, out SsrRay ray) {
     vec3 v = normalize(world - frame.cameraPos.xyz);
     if (dot(v, n) >= 0.0) return false;  // the reflecting side faces away from the camera
     vec3 r = reflect(v, n);
+    ray.worldOrigin = world;
     ray.worldDir = r;
     float distance = length(world - frame.cameraPos.xyz);
     // Lift the origin off the surface so the first samples do not find the surface itself.
@@ -130,9 +136,9 @@ void main() {
     if (depth > 0.0 && ssrSetupRay(pix, depth, id, ray)) {
         if (ssrTrace(ray, hit)) {
             vec3 c = textureLod(sceneColor, hit * frame.invScreenSize, 0.0).rgb;
-            result = vec4(env ? environmentBlend(c, hit, ray.worldDir) : c, kReflectionHit);
+            result = vec4(env ? environmentBlend(c, hit, ray.worldOrigin, ray.worldDir) : c, kReflectionHit);
         } else if (env) {
-            result = vec4(environmentRadiance(ray.worldDir), kReflectionEnvironment);
+            result = vec4(environmentRadiance(ray.worldOrigin, ray.worldDir), kReflectionEnvironment);
         }
     }
     imageStore(outReflection, pix, result);

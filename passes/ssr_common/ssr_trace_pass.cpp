@@ -2,6 +2,7 @@
 
 #include "common/clear_pass.hpp"
 #include "common/compute_pass.hpp"
+#include "env_probe/env_probe.h"
 #include "ppr_common/tiles.h"
 
 namespace ppr::passes {
@@ -31,7 +32,8 @@ graph::ImageHandle SsrTracePass::trace(graph::RenderGraph& g, const FrameInputs&
         push.flags |= gpu::kSsrWriteAll;
     }
     if (inputs.mappedNormals) push.flags |= gpu::kSsrMappedNormals;
-    if (inputs.environment) push.flags |= gpu::kSsrEnvironment;
+    if (inputs.environment.fallback) push.flags |= gpu::kSsrEnvironment;
+    if (inputs.environment.probe) push.flags |= gpu::kSsrEnvironmentProbe;
     const GBuffer& gb = *inputs.gbuffer;
     const VkSampler point = in.samplers->nearestClamp;
     graph::ImageHandle out;
@@ -47,6 +49,7 @@ graph::ImageHandle SsrTracePass::trace(graph::RenderGraph& g, const FrameInputs&
     // A whole-screen pass into a fresh image writes every pixel; otherwise untouched pixels are kept.
     if (fresh && !listClass) pass.storageWrite(target, &out);
     else pass.storageReadWrite(target, &out);
+    pass.uniform(inputs.environment.probeData, 0, sizeof(gpu::EnvProbeData)).sampled(inputs.environment.probeCube, in.samplers->linearClamp);
     if (usesHiz_) pass.storageRead(*inputs.hiz);
     pass.push(push);
     if (listClass) pass.dispatchIndirect(inputs.tiles->args, sizeof(gpu::TileDispatchArgs) * *listClass);

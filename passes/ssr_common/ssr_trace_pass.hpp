@@ -2,6 +2,7 @@
 // One screen-space ray-marching technique (its shader includes ssr_common/ssr_pixel.glsl): the four
 // SSR baselines each make one of these from their own folder, and PPR uses ssr-hiz's as its
 // fallback on the non-planar tile list.
+#include "common/environment.hpp"
 #include "common/frame_inputs.hpp"
 #include "gbuffer/gbuffer_pass.hpp"
 #include "graph/graph.hpp"
@@ -29,13 +30,13 @@ struct SsrInputs {
     SsrParams params;
     bool indirect = true;                      // over the tile lists (--set indirect) or the whole screen
     bool mappedNormals = false;                // reflector pixels use the normal-mapped normal (--set normalmap)
-    bool environment = false;                  // misses show the sky (--set fallback_env)
+    Environment environment;                   // what misses show (--set fallback_env, env_source)
 };
 
 class SsrTracePass {
 public:
     static constexpr VkFormat kReflectionFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
-    // `name` prefixes the pass names; usesHiz: the shader binds the depth hierarchy (binding 9).
+    // `name` prefixes the pass names; usesHiz: the shader binds the depth hierarchy (binding 11).
     SsrTracePass(const vk::Context& ctx, shader::Spirv spirv, std::string name, bool usesHiz);
 
     // The technique on its own: a new reflection image (common/reflection.h) with every reflective
