@@ -13,6 +13,7 @@ BOOKWORM_PKGS=(
   libvulkan-dev vulkan-validationlayers glslang-tools glslang-dev
   libglfw3-dev libglm-dev libtinygltf-dev libimgui-dev libstb-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev
+  clang-14 libclang-rt-14-dev  # libFuzzer + ASan/UBSan runtimes for scripts/fuzz.sh (the fuzz preset)
   xvfb xauth xdotool x11-apps imagemagick graphviz assimp-testmodels
 )
 BACKPORTS_PKGS=(mesa-vulkan-drivers)

@@ -7,6 +7,7 @@
 #include "render/headless.hpp"
 #include "scene/stress_scene.hpp"
 #include "techniques/technique_table.hpp"
+#include "util/output_files.hpp"
 
 #include <unistd.h>
 
@@ -77,6 +78,7 @@ class Bench {
 public:
     explicit Bench(const Options& o) : o_(o), extent_{o.width, o.height}, frames_(o.frames ? o.frames : 10) {
         for (const std::string& kv : o.sets) settings_.apply(kv);
+        util::prepareOutputDirectory(o.out, "--out " + o.out);  // before the run, not after it
         vk::ContextOptions co;
         co.validation = o.validation;
         ctx_ = vk::Context::create(co);
@@ -250,9 +252,9 @@ private:
                            {"settings", settings_.all()},
                            {"validation_errors", ctx_->validationErrors()}};
         const std::filesystem::path out(o_.out);
-        std::filesystem::create_directories(out);
+        util::prepareOutputDirectory(out, "--out " + o_.out);
         writeJsonFile((out / "bench.json").string(), benchJson(results_));
-        std::ofstream((out / "bench.md").string()) << benchMarkdown(results_, commandLine());
+        util::writeTextFile(out / "bench.md", benchMarkdown(results_, commandLine()));
         if (writeBenchPlot(results_, (out / "bench.png").string())) std::printf("ppr: plot %s\n", (out / "bench.png").c_str());
         std::printf("ppr: wrote %s (bench.json, bench.md)\n", std::filesystem::absolute(out).c_str());
         if (ctx_->validationErrors() > 0) {

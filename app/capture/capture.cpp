@@ -2,6 +2,7 @@
 
 #include "capture/report.hpp"
 #include "render/headless_session.hpp"
+#include "util/output_files.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -34,14 +35,14 @@ int runCapture(const Options& o) {
         info.validationErrors = s.ctx->validationErrors() - errorsBefore;
         info.images = {{"final", "final.png"}};
         if (o.dumpGraph) {
-            std::ofstream((dir / "graph.dot").string()) << r.dot;
+            util::writeTextFile(dir / "graph.dot", r.dot);
             info.images["graph"] = "graph.dot";
         }
         writeJsonFile((dir / "report.json").string(), makeReport(*s.ctx, info, r));
         summary["cameras"][cam.name] = {{"dir", dir.string()}, {"total_gpu_ms", r.totalMedianMs},
                                         {"validation_errors", info.validationErrors}};
         std::printf("ppr: %-10s %ux%u  %.2f ms GPU (median of %u frames)  -> %s\n", cam.name.c_str(), s.extent.width, s.extent.height,
-                    r.totalMedianMs, s.frames, (dir / "final.png").c_str());
+                    r.totalMedianMs, r.medianFrames, (dir / "final.png").c_str());
     }
     if (!s.singleCamera()) {
         summary["device"] = s.ctx->info().name;

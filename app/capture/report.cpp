@@ -61,6 +61,13 @@ nlohmann::json makeReport(const vk::Context& ctx, const ReportInfo& info, const 
         j["glass"] = {{"atlas_size", r.glass->atlasSize}, {"panels_visible", r.glass->visible}, {"regions", r.glass->regions()},
                       {"regions_scaled", r.glass->scaled}, {"panels_dropped", r.glass->dropped}, {"scale", r.glass->scale},
                       {"overflow", r.glass->overflowed()}};
+    j["environment_probe"] = nullptr;
+    if (const std::optional<EnvironmentProbe::Stats>& p = r.environmentProbe) {
+        const auto xyz = [](const glm::vec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); };
+        j["environment_probe"] = {{"face_size", p->faceSize},     {"centre", xyz(p->placement.centre)}, {"box_min", xyz(p->placement.boxMin)},
+                                  {"box_max", xyz(p->placement.boxMax)}, {"gpu_ms", p->gpuMs}, {"wall_ms", p->wallMs},
+                                  {"bytes", p->bytes}};
+    }
     j["warnings"] = r.warning.empty() ? nlohmann::json::array() : nlohmann::json::array({r.warning});
     j["validation"] = info.validationEnabled;
     j["validation_errors"] = info.validationErrors;

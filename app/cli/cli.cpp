@@ -76,7 +76,7 @@ std::string usage() {
            "  --reflectors FILE    reflector JSON (default: <scene>.reflectors.json or glTF node extras)\n"
            "  --camera NAME|x,y,z,yawDeg,pitchDeg[,fovYDeg]\n"
            "                       capture: default = every named camera; view: the first one\n"
-           "  --size WxH           default 1280x720 (16..8192 per side; ppr: at most " + std::to_string(gpu::kPprMaxExtent) +
+           "  --size WxH           default 1280x720 (1..8192 per side; ppr: at most " + std::to_string(gpu::kPprMaxExtent) +
            ", its offsets are 12-bit)\n"
            "  --technique T[@key=value,...]   compare and bench: repeatable; T one of the list below, with its own\n"
            "                       settings after @ (e.g. ppr@normalmap=off, a row of its own)\n" +
@@ -93,7 +93,7 @@ std::string usage() {
            "  --dump-graph         write graph.dot (Graphviz) of the frame graph next to the report\n";
 }
 
-Options parseCommandLine(int argc, const char* const* argv) {
+static Options parseArguments(int argc, const char* const* argv) {
     Options o;
     Settings check;  // validates --set values as they are parsed
     int i = 1;
@@ -169,6 +169,30 @@ Options parseCommandLine(int argc, const char* const* argv) {
                                  ": PPR encodes offsets with 12-bit integer parts, so it runs at most " + std::to_string(gpu::kPprMaxExtent) +
                                  " px per side (use --technique planar or none for larger sizes)");
     return o;
+}
+
+std::string printable(const std::string& text) {
+    static const char* hex = "0123456789abcdef";
+    std::string out;
+    for (const char c : text) {
+        const auto u = static_cast<unsigned char>(c);
+        if (c == '\n') out += "\\n";
+        else if (c == '\r') out += "\\r";
+        else if (c == '\t') out += "\\t";
+        else if (u < 0x20 || u == 0x7f) out += std::string("\\x") + hex[u >> 4] + hex[u & 15];
+        else out += c;
+    }
+    return out;
+}
+
+// Every message quotes the offending argument: control characters in it (found by fuzz_cli; a script
+// saved with CRLF line ends passes "640x360\r") must not break the one-line error.
+Options parseCommandLine(int argc, const char* const* argv) {
+    try {
+        return parseArguments(argc, argv);
+    } catch (const std::runtime_error& e) {
+        throw std::runtime_error(printable(e.what()));
+    }
 }
 
 }  // namespace ppr::app

@@ -44,12 +44,14 @@ TechniqueVariant parseTechniqueVariant(const std::string& text);
 // `ppr bench --sweep` names.
 const std::vector<std::string>& benchSweepNames();
 
-constexpr uint32_t kMinSize = 16;
+constexpr uint32_t kMinSize = 1;  // a 1-pixel-wide frame is valid (the validation sweep renders 1x4096)
 constexpr uint32_t kMaxSize = 8192;
 constexpr uint32_t kMaxFrames = 100000;
 
 // Throws std::runtime_error with one line naming the option and the problem.
 Options parseCommandLine(int argc, const char* const* argv);
+// `text` with control characters as C escapes (\r, \t, \x01): a message quoting an argument stays one line.
+std::string printable(const std::string& text);
 std::string usage();
 
 }  // namespace ppr::app

@@ -55,8 +55,8 @@ std::vector<ResolvedCamera> resolveCameras(const scene::Scene& s, const std::str
     if (const scene::NamedCamera* c = s.findCamera(spec)) return {{c->name, c->pose}};
     std::string known;
     for (const scene::NamedCamera& c : s.cameras) known += (known.empty() ? "" : ", ") + c.name;
-    throw std::runtime_error("--camera " + spec + ": no such camera in " + s.sourcePath +
-                             " (known: " + (known.empty() ? "none" : known) + "; or give x,y,z,yawDeg,pitchDeg[,fovYDeg])");
+    throw std::runtime_error(printable("--camera " + spec + ": no such camera in " + s.sourcePath + " (known: " +
+                                       (known.empty() ? "none" : known) + "; or give x,y,z,yawDeg,pitchDeg[,fovYDeg])"));
 }
 
 std::string reflectorFilePath(const Options& o) {

@@ -31,6 +31,12 @@ util::Rgba8Image scoredPixelsImage(const FloatImage& reference, const util::Rgba
 nlohmann::json glassScores(const CaptureResult& r, const CaptureResult& ref, VkExtent2D extent, float exposure) {
     if (!ref.glass || ref.glassReflection.rgba.empty()) return nlohmann::json::object();
     FloatImage atlas = r.glassReflection;
+    // A row with its own glass_atlas has another layout than the reference's: not comparable texel
+    // for texel, so it is said instead of scored (the reference is rendered once per camera).
+    if (!atlas.rgba.empty() && (atlas.width != ref.glassReflection.width || atlas.height != ref.glassReflection.height))
+        return {{"glass_unscored", "its glass atlas is " + std::to_string(atlas.width) + "x" + std::to_string(atlas.height) +
+                                       ", the reference's " + std::to_string(ref.glassReflection.width) + "x" +
+                                       std::to_string(ref.glassReflection.height)}};
     if (atlas.rgba.empty()) {
         atlas.width = ref.glassReflection.width;
         atlas.height = ref.glassReflection.height;
@@ -149,7 +155,9 @@ int runCompare(const Options& o) {
                 std::printf("ppr: %-8s %-7s all reflector pixels: PSNR %6.2f dB (reflection alone %6.2f dB)  coverage %.4f\n",
                             cam.name.c_str(), t.c_str(), all["psnr_db_all"].get<double>(), a.psnrDb, a.coverage);
             }
-            if (!glass.empty())
+            if (glass.contains("glass_unscored"))
+                std::printf("ppr: %-8s %-7s glass: not scored: %s\n", cam.name.c_str(), t.c_str(), glass["glass_unscored"].get<std::string>().c_str());
+            else if (!glass.empty())
                 std::printf("ppr: %-8s %-7s glass: PSNR %6.2f dB (reflection alone %6.2f dB)  coverage %.4f  over %llu texels\n",
                             cam.name.c_str(), t.c_str(), glass["psnr_db_glass"].get<double>(), glass["psnr_reflection_db_glass"].get<double>(),
                             glass["coverage_glass"].get<double>(), static_cast<unsigned long long>(glass["scored_texels_glass"].get<uint64_t>()));

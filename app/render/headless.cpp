@@ -1,6 +1,7 @@
 #include "render/headless.hpp"
 
 #include "cli/cli.hpp"
+#include "render/memory_log.hpp"
 #include "techniques/technique_table.hpp"
 
 #include "hiz/hiz.h"
@@ -9,6 +10,10 @@
 #include <cstring>
 
 namespace ppr::app {
+
+namespace {
+constexpr size_t kMaxTimedFrames = 256;  // frames a capture keeps timings of (the median's window)
+}  // namespace
 
 double median(std::vector<double> v) {
     if (v.empty()) return 0.0;
@@ -122,13 +127,19 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
         slotBusy_[slot] = false;
         double total = 0.0;
         std::vector<std::string> order;
+        // Medians over the last kMaxTimedFrames frames: a soak of 10 000 frames keeps a fixed window
+        // instead of growing with every frame (the median does not depend on the order).
+        auto keep = [&](std::vector<double>& v, double ms) {
+            if (v.size() < kMaxTimedFrames) v.push_back(ms);
+            else v[result.timedFrames % kMaxTimedFrames] = ms;
+        };
         for (const graph::PassTiming& t : renderer_.timings(slot)) {
-            perPass[t.name].push_back(t.gpuMs);
+            keep(perPass[t.name], t.gpuMs);
             total += t.gpuMs;
             order.push_back(t.name);
         }
         if (!order.empty()) {
-            totals.push_back(total);
+            keep(totals, total);
             result.timedFrames++;
         }
         if (order.size() >= result.passOrder.size()) result.passOrder = order;
@@ -137,6 +148,7 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
     for (uint32_t f = 0; f < frames; ++f) {
         const uint32_t slot = f % Renderer::kFramesInFlight;
         collect(slot);
+        logMemoryEvery(ctx_, f);
         VkCommandBuffer cmd = beginSlot(slot);
         FrameRequest req;
         req.camera = camera;
@@ -167,6 +179,7 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
     for (uint32_t s = 0; s < Renderer::kFramesInFlight; ++s) collect(s);
     result.pprStats = renderer_.frameStats(lastSlot);
     result.glass = renderer_.glassStats(lastSlot);
+    result.environmentProbe = renderer_.environmentProbe().stats();
     if (result.glass && result.glass->overflowed())
         result.warning += (result.warning.empty() ? "" : "; ") + result.glass->overflowMessage();
 
@@ -185,6 +198,7 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
     }
     for (auto& [name, values] : perPass) result.passMedianMs[name] = median(values);
     result.totalMedianMs = median(totals);
+    result.medianFrames = uint32_t(totals.size());
     return result;
 }
 

@@ -21,12 +21,14 @@ struct CaptureResult {
     double totalMedianMs = 0.0;                  // median over frames of the per-frame sum
     uint32_t frames = 0;
     uint32_t timedFrames = 0;                    // frames whose timestamps came back (== frames)
+    uint32_t medianFrames = 0;                   // frames the medians are over: the last ≤ 256 timed ones
     std::vector<std::string> passOrder;          // execution order
     std::string cullLog;
     std::string dot;
     std::string warning;                         // the renderer's, e.g. reflectors beyond PPR's budget
     std::optional<gpu::PprFrameStats> pprStats;  // tile and culling counts of the last frame (PPR only)
     std::optional<GlassStats> glass;             // the last frame's glass atlas (PPR with glass panels)
+    std::optional<EnvironmentProbe::Stats> environmentProbe;  // once the renderer rendered its reflection probe
 };
 
 // Tests: one frame's G-buffer depth and, when the technique builds it, its depth hierarchy.

@@ -1,11 +1,14 @@
 #include "render/headless_session.hpp"
 
+#include "util/output_files.hpp"
+
 #include <cstdio>
 #include <stdexcept>
 
 namespace ppr::app {
 
 HeadlessSession::HeadlessSession(const Options& o) : options(o) {
+    util::prepareOutputDirectory(o.out, "--out " + o.out);  // before minutes of rendering, not after
     scene = loadScene(o);
     cameras = resolveCameras(scene, o.camera);
     vk::ContextOptions co;
@@ -35,7 +38,7 @@ HeadlessSession::HeadlessSession(const Options& o) : options(o) {
 
 std::filesystem::path HeadlessSession::cameraDir(const std::string& camera) const {
     const std::filesystem::path dir = singleCamera() ? std::filesystem::path(options.out) : std::filesystem::path(options.out) / camera;
-    std::filesystem::create_directories(dir);
+    util::prepareOutputDirectory(dir, "--out " + options.out);
     return dir;
 }
 

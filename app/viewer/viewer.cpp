@@ -5,6 +5,9 @@
 //   PPR_VIEWER_FRAMES=N         exit by itself after N presented frames (exit code 0 unless validation errors)
 //   PPR_VIEWER_SCREENSHOT_AT=N  save a capture (like F12) after frame N
 //   SIGINT / SIGTERM            close the window cleanly (exit code 0 unless validation errors)
+//   PPR_VIEWER_SOAK=1           drive itself: techniques, settings, window sizes; a memory sample at
+//                               the end of each return to the initial state (viewer_soak.hpp)
+//   PPR_MEMORY_LOG=N            print a memory sample every N frames (render/memory_log.hpp)
 #include "viewer/viewer.hpp"
 
 #include "editor/editor_ui.hpp"
@@ -12,7 +15,9 @@
 #include "capture/report.hpp"
 #include "cli/scene_source.hpp"
 #include "render/headless.hpp"
+#include "render/memory_log.hpp"
 #include "techniques/technique_table.hpp"
+#include "viewer/viewer_soak.hpp"
 #include "viewer/viewer_ui.hpp"
 #include "vk/swapchain.hpp"
 
@@ -168,6 +173,7 @@ private:
     std::unique_ptr<HeadlessRenderer> headless_;  // captures, created on the first one
     // The user's choices, handed to every frame's request by value.
     std::string technique_;
+    std::unique_ptr<ViewerSoak> soak_ = std::getenv("PPR_VIEWER_SOAK") ? std::make_unique<ViewerSoak>() : nullptr;
     std::string reference_ = "planar";  // what A/B, the heat map and hold-B compare with
     Settings settings_;
     std::unique_ptr<AbCompareTaps> abTaps_;
@@ -503,6 +509,8 @@ void Viewer::run(uint64_t maxFrames, uint64_t captureAt) {
     while (!glfwWindowShouldClose(w) && !g_quit) {
         if (maxFrames && frames_ >= maxFrames) break;
         glfwPollEvents();
+        if (soak_ && soak_->step(frames_, w, settings_, technique_))
+            std::printf("%s\n", formatMemorySample(sampleMemory(ctx_, frames_)).c_str()), std::fflush(stdout);
 
         int fbw = 0, fbh = 0;
         glfwGetFramebufferSize(w, &fbw, &fbh);
@@ -556,6 +564,7 @@ void Viewer::run(uint64_t maxFrames, uint64_t captureAt) {
         if (!presented) continue;
 
         ++frames_;
+        logMemoryEvery(ctx_, frames_);
         auto push = [](std::deque<double>& d, double v) {
             d.push_back(v);
             while (d.size() > TimingHistory::kFrames) d.pop_front();

@@ -1,6 +1,7 @@
 #include "gpu/gpu_scene.hpp"
 
 #include "gpu/scene_data.h"
+#include "vk/live_objects.hpp"
 
 #include <glm/gtc/matrix_inverse.hpp>
 
@@ -111,6 +112,7 @@ void GpuScene::uploadTextures(VkSampler sampler) {
     lci.bindingCount = 1;
     lci.pBindings = &binding;
     VK_CHECK(vkCreateDescriptorSetLayout(ctx_.device(), &lci, nullptr, &textureLayout_));
+    ++vk::liveObjects().descriptorSetLayouts;
     ctx_.name(textureLayout_, VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, "material textures");
     VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, count};
     VkDescriptorPoolCreateInfo pci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -118,6 +120,7 @@ void GpuScene::uploadTextures(VkSampler sampler) {
     pci.poolSizeCount = 1;
     pci.pPoolSizes = &size;
     VK_CHECK(vkCreateDescriptorPool(ctx_.device(), &pci, nullptr, &pool_));
+    ++vk::liveObjects().descriptorPools;
     VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     ai.descriptorPool = pool_;
     ai.descriptorSetCount = 1;
@@ -199,8 +202,8 @@ GpuScene::~GpuScene() {
     vkDeviceWaitIdle(ctx_.device());
     for (vk::Image& t : textures_) vk::destroyImage(ctx_, t);
     for (vk::Buffer* b : {&vertices_, &indices_, &draws_, &materials_}) vk::destroyBuffer(ctx_, *b);
-    if (pool_) vkDestroyDescriptorPool(ctx_.device(), pool_, nullptr);
-    if (textureLayout_) vkDestroyDescriptorSetLayout(ctx_.device(), textureLayout_, nullptr);
+    if (pool_) vkDestroyDescriptorPool(ctx_.device(), pool_, nullptr), --vk::liveObjects().descriptorPools;
+    if (textureLayout_) vkDestroyDescriptorSetLayout(ctx_.device(), textureLayout_, nullptr), --vk::liveObjects().descriptorSetLayouts;
 }
 
 }  // namespace ppr::gpu

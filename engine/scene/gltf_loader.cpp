@@ -41,7 +41,11 @@ void refuseDeepNesting(const std::string& path, bool binary) {
         uint32_t chunkLength = 0;
         std::memcpy(&chunkLength, header + 12, 4);
         if (!f || std::string(header + 16, 4) != "JSON") return;  // tinygltf names the problem
-        json.resize(std::min<uint64_t>(chunkLength, uint64_t(1) << 30));
+        // At most what the file holds: the header's claim is not trusted (fuzz_gltf: a 20-byte file
+        // claiming a 4 GiB chunk made this allocate and zero 1 GiB per load).
+        std::error_code ec;
+        const uint64_t fileSize = fs::file_size(path, ec);
+        json.resize(size_t(std::min<uint64_t>(chunkLength, (ec || fileSize < 20) ? 0 : fileSize - 20)));
         f.read(json.data(), static_cast<std::streamsize>(json.size()));
         json.resize(static_cast<size_t>(f.gcount()));
     } else {
@@ -77,6 +81,19 @@ void loadModel(const std::string& path, tinygltf::Model& model) {
     // ignoring it would draw a wrong picture, so refuse.
     if (!model.extensionsRequired.empty())
         fail(path + ": extensionsRequired: '" + model.extensionsRequired[0] + "' is not supported");
+}
+
+// Vertex positions and node transforms are each finite, yet their product can overflow (fuzz_gltf:
+// x = -1.73e38 under a scale of 2 gave an infinite scene bound): the mesh's box corners in world
+// space must stay finite, and every vertex lies within them.
+bool finiteInWorld(const Mesh& mesh, const glm::mat4& world) {
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 local((corner & 1) ? mesh.boundsMax.x : mesh.boundsMin.x, (corner & 2) ? mesh.boundsMax.y : mesh.boundsMin.y,
+                              (corner & 4) ? mesh.boundsMax.z : mesh.boundsMin.z);
+        const glm::vec3 p = glm::vec3(world * glm::vec4(local, 1.0f));
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return false;
+    }
+    return true;
 }
 
 glm::mat4 localMatrix(const GltfFile& file, int index) {
@@ -162,6 +179,8 @@ struct Traversal {
     int addReflector(int index, const glm::mat4& world) {
         Reflector r;
         if (!nodeReflector(file, index, world, r)) return -1;
+        if (scene.reflectors.size() >= kMaxReflectors)
+            fail(file.name + ": " + nodeLabel(file, index) + " extras.ppr_reflector: more than " + std::to_string(kMaxReflectors) + " reflectors");
         for (const auto& existing : scene.reflectors)
             if (existing.name == r.name)
                 fail(file.name + ": " + nodeLabel(file, index) + " extras.ppr_reflector.name: duplicate reflector name '" + r.name + "'");
@@ -179,6 +198,9 @@ struct Traversal {
             auto [it, fresh] = primitiveMesh.try_emplace({node.mesh, p}, -1);
             if (fresh) it->second = loadPrimitive(file, node.mesh, p, scene);  // shared by every instance
             if (it->second < 0) continue;
+            const Mesh& mesh = scene.meshes[size_t(it->second)];
+            if (!finiteInWorld(mesh, world))
+                fail(file.name + ": " + nodeLabel(file, index) + ": mesh '" + mesh.name + "' leaves the float range in world space");
             DrawItem draw;
             draw.mesh = uint32_t(it->second);
             draw.world = world;

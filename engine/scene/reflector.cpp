@@ -102,6 +102,8 @@ json exactArray(const float* v, int n) {
 std::string validateReflector(const Reflector& r) {
     if (r.name.empty()) return "name: must not be empty";
     if (!finite(r.center)) return "center: not finite";
+    if (std::max({std::abs(r.center.x), std::abs(r.center.y), std::abs(r.center.z)}) > kMaxCoordinate)
+        return "center: beyond " + fmtNum(kMaxCoordinate) + " m of the origin";
     if (auto p = unitProblem(r.normal, "n"); !p.empty()) return "normal: " + p;
     if (auto p = unitProblem(r.tangent, "t"); !p.empty()) return "tangent: " + p;
     if (glm::length(glm::cross(r.normal, r.tangent)) < 1e-3f) return "tangent: parallel to normal";
@@ -111,6 +113,8 @@ std::string validateReflector(const Reflector& r) {
     if (!std::isfinite(h.x) || !std::isfinite(h.y)) return "half_extents: not finite";
     if (!(h.x > kMinHalfExtent) || !(h.y > kMinHalfExtent))
         return "half_extents: must be > " + fmtNum(kMinHalfExtent) + " m, got [" + fmtNum(h.x) + ", " + fmtNum(h.y) + "]";
+    if (h.x > kMaxHalfExtent || h.y > kMaxHalfExtent)
+        return "half_extents: must be at most " + fmtNum(kMaxHalfExtent) + " m, got [" + fmtNum(h.x) + ", " + fmtNum(h.y) + "]";
     if (r.kind != ReflectorKind::Opaque && r.kind != ReflectorKind::Glass) return "kind: invalid value";
     if (!std::isfinite(r.reflectance) || r.reflectance < 0.0f || r.reflectance > 1.0f)
         return "reflectance: must be within 0..1, got " + fmtNum(r.reflectance);
@@ -179,6 +183,8 @@ std::vector<Reflector> parseReflectorFile(const std::string& text, const std::st
     if (!doc.contains("reflectors")) fail(file + ": reflectors: missing required field");
     const json& list = doc.at("reflectors");
     if (!list.is_array()) fail(file + ": reflectors: expected an array, got " + describe(list));
+    if (list.size() > kMaxReflectors)
+        fail(file + ": reflectors: " + std::to_string(list.size()) + " entries, at most " + std::to_string(kMaxReflectors));
 
     std::vector<Reflector> out;
     std::map<std::string, size_t> seen;

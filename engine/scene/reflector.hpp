@@ -33,6 +33,12 @@ constexpr int kReflectorFileVersion = 1;
 constexpr float kUnitTolerance = 1e-3f;       // |normal| and |tangent| must be 1 within this
 constexpr float kOrthoTolerance = 1e-3f;      // |dot(normal, tangent)| must be below this
 constexpr float kMinHalfExtent = 1e-4f;       // metres
+// Beyond these a float32 world loses the millimetres the passes' tolerances are made of: refused, not
+// rendered wrong. A reflector list longer than kMaxReflectors is refused too (PPR projects the first
+// kPprMaxReflectors; the rest get planar/ray-traced/SSR only, with a warning).
+constexpr float kMaxHalfExtent = 1e5f;        // metres
+constexpr float kMaxCoordinate = 1e6f;        // metres, |center| per axis
+constexpr size_t kMaxReflectors = 16384;
 
 // Parses and validates one reflector object. `where` names the file and path for error messages,
 // e.g. "scene.reflectors.json: reflectors[2]". Throws std::runtime_error with one line

@@ -1,6 +1,7 @@
 // The `stress:N` scene: N mirror tiles plus fixed, deterministic content for them to reflect.
 #include "scene/stress_scene.hpp"
 
+#include "scene/errors.hpp"
 #include "scene/tangents.hpp"
 
 #include <glm/gtc/constants.hpp>
@@ -23,8 +24,8 @@ std::optional<uint32_t> parseStressSpec(const std::string& spec) {
         else n = n * 10 + uint32_t(c - '0');
     }
     if (!ok || n < 1 || n > kStressMaxTiles)
-        throw std::runtime_error("--scene " + spec + ": expected stress:N with N a whole number in 1.." +
-                                 std::to_string(kStressMaxTiles));
+        detail::fail("--scene " + spec + ": expected stress:N with N a whole number in 1.." +  // one line, whatever spec holds
+                     std::to_string(kStressMaxTiles));
     return n;
 }
 

@@ -2,6 +2,7 @@
 
 #include "shader/layout_check.hpp"
 #include "shader/spirv_reflect.hpp"
+#include "vk/live_objects.hpp"
 
 #include <stdexcept>
 #include <utility>
@@ -33,6 +34,7 @@ void createLayout(const vk::Context& ctx, const PipelineLayoutDesc& desc, std::s
     sci.bindingCount = static_cast<uint32_t>(bindings.size());
     sci.pBindings = bindings.data();
     VK_CHECK(vkCreateDescriptorSetLayout(ctx.device(), &sci, nullptr, &setLayout));
+    ++vk::liveObjects().descriptorSetLayouts;
     ctx.name(setLayout, VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, name + " set0");
 
     std::vector<VkDescriptorSetLayout> sets{setLayout};
@@ -71,9 +73,9 @@ Pipeline& Pipeline::operator=(Pipeline&& o) noexcept {
 
 void Pipeline::reset() {
     if (!device_) return;
-    if (pipeline_) vkDestroyPipeline(device_, pipeline_, nullptr);
+    if (pipeline_) vkDestroyPipeline(device_, pipeline_, nullptr), --vk::liveObjects().pipelines;
     if (layout_) vkDestroyPipelineLayout(device_, layout_, nullptr);
-    if (pushSetLayout_) vkDestroyDescriptorSetLayout(device_, pushSetLayout_, nullptr);
+    if (pushSetLayout_) vkDestroyDescriptorSetLayout(device_, pushSetLayout_, nullptr), --vk::liveObjects().descriptorSetLayouts;
     device_ = VK_NULL_HANDLE;
     pipeline_ = VK_NULL_HANDLE;
     layout_ = VK_NULL_HANDLE;
@@ -103,6 +105,7 @@ Pipeline createComputePipeline(const vk::Context& ctx, Spirv spirv, const Pipeli
     VkResult r = vkCreateComputePipelines(ctx.device(), VK_NULL_HANDLE, 1, &ci, nullptr, &p.pipeline_);
     vkDestroyShaderModule(ctx.device(), module, nullptr);
     VK_CHECK(r);
+    ++vk::liveObjects().pipelines;
     ctx.name(p.pipeline_, VK_OBJECT_TYPE_PIPELINE, name);
     return p;
 }
@@ -211,6 +214,7 @@ Pipeline GraphicsPipelineBuilder::build() {
     vkDestroyShaderModule(ctx_.device(), vs, nullptr);
     if (fs) vkDestroyShaderModule(ctx_.device(), fs, nullptr);
     VK_CHECK(r);
+    ++vk::liveObjects().pipelines;
     ctx_.name(p.pipeline_, VK_OBJECT_TYPE_PIPELINE, name_);
     return p;
 }

@@ -3,15 +3,25 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include <fstream>
 #include <stdexcept>
 
 namespace ppr::util {
 
 void writePng(const std::string& path, const Rgba8Image& image) {
     if (image.pixels.size() != size_t(image.width) * image.height * 4) throw std::runtime_error(path + ": image size mismatch");
-    if (!stbi_write_png(path.c_str(), static_cast<int>(image.width), static_cast<int>(image.height), 4, image.pixels.data(),
-                        static_cast<int>(image.width * 4)))
-        throw std::runtime_error(path + ": cannot write PNG");
+    // Encoded in memory, then written with every failure checked: stbi_write_png ignores fwrite's
+    // result, so a full disk would leave a truncated PNG behind without a word.
+    std::string png;
+    auto append = [](void* out, void* data, int size) { static_cast<std::string*>(out)->append(static_cast<const char*>(data), size_t(size)); };
+    if (!stbi_write_png_to_func(append, &png, static_cast<int>(image.width), static_cast<int>(image.height), 4, image.pixels.data(),
+                                static_cast<int>(image.width * 4)))
+        throw std::runtime_error(path + ": cannot encode PNG");
+    std::ofstream f(path, std::ios::binary);
+    if (!f) throw std::runtime_error(path + ": cannot open for writing");
+    f.write(png.data(), std::streamsize(png.size()));
+    f.flush();
+    if (!f) throw std::runtime_error(path + ": write failed");
 }
 
 Rgba8Image readPng(const std::string& path) {

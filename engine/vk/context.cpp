@@ -323,6 +323,15 @@ std::unique_ptr<Context> Context::create(const ContextOptions& options) {
     aci.physicalDevice = ctx->physical_;
     aci.device = ctx->device_;
     aci.instance = ctx->instance_;
+    // PPR_HEAP_LIMIT_MB=N: behave as a device whose heaps hold N MiB each (tests of the memory refusal;
+    // lavapipe's heap is the host's RAM, larger than any request the CLI accepts).
+    std::vector<VkDeviceSize> heapLimits;
+    if (const char* limit = std::getenv("PPR_HEAP_LIMIT_MB"); limit && std::atoll(limit) > 0) {
+        VkPhysicalDeviceMemoryProperties mp{};
+        vkGetPhysicalDeviceMemoryProperties(ctx->physical_, &mp);
+        heapLimits.assign(mp.memoryHeapCount, VkDeviceSize(std::atoll(limit)) * 1024 * 1024);
+        aci.pHeapSizeLimit = heapLimits.data();
+    }
     VK_CHECK(vmaCreateAllocator(&aci, &ctx->allocator_));
 
     VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};

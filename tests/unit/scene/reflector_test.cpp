@@ -73,7 +73,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"bad_center_count.json", {"reflectors[0].center: expected an array of 3 numbers"}},
         BadCase{"bad_center_string.json", {"reflectors[0].center[1]", "expected a finite number"}},
         BadCase{"bad_reflectors_not_array.json", {"reflectors: expected an array"}},
-        BadCase{"bad_not_object.json", {"expected a JSON object"}}),
+        BadCase{"bad_not_object.json", {"expected a JSON object"}},
+        BadCase{"bad_huge_extents.json", {"reflectors[0].half_extents: must be at most 100000 m, got [1e+09, 1e+09]"}},
+        BadCase{"bad_far_center.json", {"reflectors[0].center: beyond 1e+06 m of the origin"}}),
     [](const auto& info) {
         std::string name = info.param.file;
         name = name.substr(0, name.find('.'));
@@ -81,6 +83,13 @@ INSTANTIATE_TEST_SUITE_P(
             if (!isalnum(static_cast<unsigned char>(ch))) ch = '_';
         return name;
     });
+
+TEST(Reflector, TooManyEntriesAreRefusedBeforeParsingThem) {
+    std::string text = R"({"version":1,"reflectors":[)";
+    for (size_t i = 0; i <= kMaxReflectors; ++i) text += (i ? ",{}" : "{}");
+    text += "]}";
+    expectError([&] { parseReflectorFile(text, "many.json"); }, {"many.json: reflectors: 16385 entries, at most 16384"});
+}
 
 TEST(Reflector, MissingFileNamesIt) {
     expectError([] { loadReflectorFile("/nonexistent/dir/scene.reflectors.json"); },

@@ -1,0 +1,90 @@
+#!/usr/bin/env bash
+# The soak (docs/reliability.md): memory must be flat after warm-up.
+#   scripts/soak.sh [--frames N] [--viewer-seconds S] [--size WxH] [--ppr EXE] [--no-viewer]
+# 1. Headless: `ppr capture` of N frames (default 10 000) per technique at a small size, printing a
+#    memory sample every 500 frames (PPR_MEMORY_LOG); growth is measured from frame 1000 (warm-up) to
+#    the end and reported per 1 000 frames.
+# 2. Viewer: `ppr view` under Xvfb for S seconds (default 600) driving itself (PPR_VIEWER_SOAK=1:
+#    techniques, random setting values, window sizes from 1x1 up, iconify/restore).
+# --no-capture / --no-viewer skip a part. Prints a summary table; exit 1 if VMA allocations, bytes or Vulkan object counts grew after warm-up,
+# or any run failed. Resident memory growth is reported (the allocator and driver caches make it noisy),
+# and fails only above --rss-limit KiB per 1 000 frames (default 64).
+set -uo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+ppr="$root/build/release/bin/ppr"
+frames=1300; seconds=600; size=64x64; viewer=1; rss_limit=64; warmup=300; every=100
+techniques=""
+capture=1
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --frames) frames="$2"; shift 2 ;;
+    --viewer-seconds) seconds="$2"; shift 2 ;;
+    --size) size="$2"; shift 2 ;;
+    --ppr) ppr="$2"; shift 2 ;;
+    --no-viewer) viewer=0; shift ;;
+    --no-capture) capture=0; shift ;;
+    --rss-limit) rss_limit="$2"; shift 2 ;;
+    --warmup) warmup="$2"; shift 2 ;;
+    --every) every="$2"; shift 2 ;;
+    --techniques) techniques="$2"; shift 2 ;;
+    *) echo "soak: unknown argument $1" >&2; exit 2 ;;
+  esac
+done
+work="$(mktemp -d)"
+if [ -z "$techniques" ]; then
+  techniques=$("$ppr" --help | sed -n '/^  --technique/,/^  --reference/p' | sed -nE 's/^    ([a-z][a-z-]*) {2,}.*/\1/p' | tr '\n' ' ')
+fi
+
+# growth LOG WARMUP: from the memory lines of one run, the per-1000-frame growth of each counter between
+# the first sample at or after WARMUP and the last one: "rss vma_allocations vma_bytes pipelines layouts pools frames"
+growth() {
+  awk -v warm="$2" '
+    /^ppr: memory / {
+      for (i = 3; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] }
+      if (v["frame"] + 0 >= warm + 0 && !have) { have = 1; for (k in v) first[k] = v[k] }
+      for (k in v) last[k] = v[k]
+    }
+    END {
+      if (!have) { print "none"; exit }
+      span = last["frame"] - first["frame"]; s = span > 0 ? 1000.0 / span : 0
+      printf "%.1f %.1f %.2f %.0f %d %d %d %d %d %d\n", (last["rss_kib"] - first["rss_kib"]) * s, (last["heap_kib"] - first["heap_kib"]) * s,
+        (last["vma_allocations"] - first["vma_allocations"]) * s, (last["vma_bytes"] - first["vma_bytes"]) * s,
+        last["pipelines"] - first["pipelines"], last["descriptor_set_layouts"] - first["descriptor_set_layouts"],
+        last["descriptor_pools"] - first["descriptor_pools"], span, last["vma_allocations"], last["pipelines"]
+    }' "$1"
+}
+
+fail=0
+printf '%-12s %10s %12s %12s %14s %16s %10s %8s %7s %8s\n' run frames "rss KiB/1k" "heap KiB/1k" "vma allocs/1k" "vma bytes/1k" pipelines+ layouts+ pools+ "allocs"
+report() {  # name log rc [warm-up frame]
+  local g; g=$(growth "$2" "${4:-$warmup}")
+  if [ "$3" -ne 0 ] || [ "$g" = none ]; then echo "$1: FAILED (exit $3; see $2)"; fail=1; return; fi
+  read -r rss heap allocs bytes pipes layouts pools span nallocs npipes <<<"$g"
+  printf '%-12s %10s %12s %12s %14s %16s %10s %8s %7s %8s\n' "$1" "$span" "$rss" "$heap" "$allocs" "$bytes" "$pipes" "$layouts" "$pools" "$nallocs"
+  if awk -v a="$allocs" -v b="$bytes" -v r="$rss" -v l="$rss_limit" 'BEGIN { exit !(a != 0 || b != 0 || r > l) }' ||
+     [ "$pipes" -ne 0 ] || [ "$layouts" -ne 0 ] || [ "$pools" -ne 0 ]; then
+    echo "  ^ grew after warm-up (frame $warmup)"; fail=1
+  fi
+}
+
+[ $capture -eq 0 ] && techniques=""
+for t in $techniques; do
+  log="$work/capture-$t.log"
+  PPR_MEMORY_LOG=$every "$ppr" capture --technique "$t" --camera overview --size "$size" --set shadowres=256 --frames "$frames" --out "$work/$t" >"$log" 2>&1
+  report "$t" "$log" $?
+done
+
+if [ $viewer -eq 1 ]; then
+  log="$work/viewer.log"
+  display=:$((90 + RANDOM % 9))
+  Xvfb "$display" -screen 0 1600x900x24 >/dev/null 2>&1 &
+  xvfb=$!
+  sleep 1
+  DISPLAY=$display PPR_VIEWER_SOAK=1 timeout -s INT "$seconds" "$ppr" view --size 640x360 >"$log" 2>&1
+  rc=$?
+  [ $rc -eq 124 ] && rc=0  # (timeout's own code when it had to signal; ppr exits 0 on SIGINT)
+  kill "$xvfb" 2>/dev/null
+  report viewer "$log" $rc 1  # the viewer samples itself at the end of each cycle's home stretch (frame 599, 1199, ...)
+fi
+echo "soak: logs in $work"
+exit $fail

@@ -1,0 +1,107 @@
+// glTF scenes: loadGltf (engine/scene/gltf_*.cpp) on .gltf text and .glb containers alike (the
+// loader sniffs the magic, as for users' files): the nesting pre-scan, tinygltf's parse, then the
+// project's own validation and flattening of nodes, accessors, meshes, materials, textures, cameras
+// and extras reflectors, and the draw-to-reflector binding. A scene that loads must be one the
+// renderer can upload as is: every index, mesh, material, texture and reflector reference in range
+// and every number finite.
+//
+// loadGltf takes a path, so each input is written to a private directory in /dev/shm (RAM) that
+// holds nothing else: relative buffer/image URIs and the "<stem>.reflectors.json" sidecar lookup
+// find nothing there. The directory is removed at exit.
+#include "fuzz_check.hpp"
+
+#include "scene/scene.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+#include <unistd.h>
+
+using namespace ppr;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path g_dir;
+
+const std::string& inputPath() {
+    static const std::string path = [] {
+        std::string base = fs::exists("/dev/shm") ? "/dev/shm" : fs::temp_directory_path().string();
+        std::string tmpl = base + "/ppr-fuzz-gltf-XXXXXX";
+        if (!::mkdtemp(tmpl.data())) fuzz::broken("cannot create a directory under " + base);
+        g_dir = tmpl;
+        std::atexit([] {
+            std::error_code ec;
+            fs::remove_all(g_dir, ec);
+        });
+        return (g_dir / "fuzz.gltf").string();
+    }();
+    return path;
+}
+
+bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+// What the renderer relies on when it uploads a loaded scene.
+void checkScene(const scene::Scene& s) {
+    for (const scene::Mesh& m : s.meshes) {
+        fuzz::check(m.indexCount > 0 && m.indexCount % 3 == 0, "mesh '" + m.name + "': index count not a positive multiple of 3");
+        fuzz::check(size_t(m.firstIndex) + m.indexCount <= s.indices.size(), "mesh '" + m.name + "': indices out of range");
+        fuzz::check(m.vertexOffset >= 0, "mesh '" + m.name + "': negative vertex offset");
+        for (uint32_t i = 0; i < m.indexCount; ++i)
+            fuzz::check(size_t(m.vertexOffset) + s.indices[m.firstIndex + i] < s.vertices.size(), "mesh '" + m.name + "': vertex out of range");
+        fuzz::check(m.material >= -1 && m.material < int(s.materials.size()), "mesh '" + m.name + "': material out of range");
+        fuzz::check(finite(m.boundsMin) && finite(m.boundsMax), "mesh '" + m.name + "': bounds not finite");
+    }
+    for (const scene::Vertex& v : s.vertices) {
+        fuzz::check(finite(v.position) && finite(v.normal) && finite(glm::vec3(v.tangent)) && std::isfinite(v.tangent.w) &&
+                        std::isfinite(v.uv0.x) && std::isfinite(v.uv0.y),
+                    "vertex attribute not finite");
+        fuzz::check(std::abs(glm::length(v.normal) - 1.0f) < 1e-3f, "normal not unit length");
+    }
+    for (const scene::Material& m : s.materials)
+        for (int t : {m.baseColorTexture, m.normalTexture, m.metallicRoughnessTexture})
+            fuzz::check(t >= -1 && t < int(s.textures.size()), "material '" + m.name + "': texture out of range");
+    for (const scene::TextureImage& t : s.textures)
+        fuzz::check(t.width > 0 && t.height > 0 && t.rgba8.size() == size_t(t.width) * t.height * 4, "texture '" + t.name + "': bad size");
+    for (const scene::DrawItem& d : s.draws) {
+        fuzz::check(d.mesh < s.meshes.size(), "draw of node '" + d.nodeName + "': mesh out of range");
+        fuzz::check(d.reflector >= -1 && d.reflector < int(s.reflectors.size()), "draw of node '" + d.nodeName + "': reflector out of range");
+        for (int c = 0; c < 4; ++c) fuzz::check(finite(glm::vec3(d.world[c])) && std::isfinite(d.world[c][3]), "draw world matrix not finite");
+    }
+    for (const scene::Reflector& r : s.reflectors)
+        fuzz::check(scene::validateReflector(r).empty(), "reflector '" + r.name + "': " + scene::validateReflector(r));
+    for (const scene::NamedCamera& c : s.cameras)
+        fuzz::check(finite(c.pose.position) && std::isfinite(c.pose.yawDeg) && c.pose.pitchDeg >= -90.0f && c.pose.pitchDeg <= 90.0f &&
+                        c.pose.fovYDeg > 1.0f && c.pose.fovYDeg < 179.0f,
+                    "camera '" + c.name + "': bad pose");
+    fuzz::check(finite(s.boundsMin) && finite(s.boundsMax), "scene bounds not finite");
+}
+
+}  // namespace
+
+// The loader's notes on skipped content (points, orthographic cameras) go to std::cerr: muted, since
+// they would drown libFuzzer's own output. Sanitizer reports and broken invariants write to fd 2.
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+    std::cerr.rdbuf(nullptr);
+    return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    const std::string& path = inputPath();
+    {
+        std::ofstream out(path, std::ios::binary | std::ios::trunc);
+        out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+        if (!out) fuzz::broken("cannot write " + path);
+    }
+    try {
+        checkScene(scene::loadGltf(path));
+    } catch (const std::runtime_error& e) {
+        fuzz::checkOneLine(e);
+    }
+    return 0;
+}

@@ -1,0 +1,43 @@
+// The command line's bounds (docs/reliability.md "Bad input"): absurd sizes and frame counts are
+// refused with one line naming the option and value; one-pixel-wide frames are valid.
+#include "cli/cli.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace {
+
+ppr::app::Options parse(const std::vector<std::string>& args) {
+    std::vector<const char*> argv;
+    for (const std::string& a : args) argv.push_back(a.c_str());
+    return ppr::app::parseCommandLine(int(argv.size()), argv.data());
+}
+
+std::string errorOf(const std::vector<std::string>& args) {
+    try {
+        parse(args);
+    } catch (const std::runtime_error& e) {
+        return e.what();
+    }
+    return "(accepted)";
+}
+
+}  // namespace
+
+TEST(CliLimits, OnePixelSidesAreValid) {
+    const ppr::app::Options o = parse({"ppr", "capture", "--size", "1x4096"});
+    EXPECT_EQ(o.width, 1u);
+    EXPECT_EQ(o.height, 4096u);
+    EXPECT_EQ(parse({"ppr", "capture", "--size", "17x9"}).height, 9u);
+}
+
+TEST(CliLimits, AbsurdSizesAndFrameCountsAreRefused) {
+    EXPECT_EQ(errorOf({"ppr", "capture", "--size", "0x0"}), "--size 0: out of range (1..8192)");
+    EXPECT_EQ(errorOf({"ppr", "capture", "--size", "-5x10"}), "--size -5: expected a whole number");
+    EXPECT_EQ(errorOf({"ppr", "capture", "--size", "100000x100000"}), "--size 100000: out of range (1..8192)");
+    EXPECT_EQ(errorOf({"ppr", "capture", "--frames", "0"}), "--frames 0: out of range (1..100000)");
+    EXPECT_EQ(errorOf({"ppr", "capture", "--frames", "1e12"}), "--frames 1e12: expected a whole number");
+    EXPECT_EQ(errorOf({"ppr", "capture", "--frames", "1000000000000"}), "--frames 1000000000000: out of range (1..100000)");
+}
