@@ -7,7 +7,7 @@
 //
 // loadGltf takes a path, so each input is written to a private directory in /dev/shm (RAM) that
 // holds nothing else: relative buffer/image URIs and the "<stem>.reflectors.json" sidecar lookup
-// find nothing there. The directory is removed at exit.
+// find nothing there. The directory is removed at exit (or by the next run, after a crash).
 #include "fuzz_check.hpp"
 
 #include "scene/scene.hpp"
@@ -29,12 +29,27 @@ namespace {
 
 fs::path g_dir;
 
+// A crash, timeout or Ctrl-C ends the process without atexit, so each run's directory carries its
+// PID and the next run removes those whose process is gone.
+void removeStaleDirs(const fs::path& base) {
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(base, ec)) {
+        const std::string name = e.path().filename().string();
+        if (name.rfind("ppr-fuzz-gltf-", 0) != 0) continue;
+        const std::string pid = name.substr(14);
+        if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos) continue;
+        if (!fs::exists("/proc/" + pid)) fs::remove_all(e.path(), ec);
+    }
+}
+
 const std::string& inputPath() {
     static const std::string path = [] {
-        std::string base = fs::exists("/dev/shm") ? "/dev/shm" : fs::temp_directory_path().string();
-        std::string tmpl = base + "/ppr-fuzz-gltf-XXXXXX";
-        if (!::mkdtemp(tmpl.data())) fuzz::broken("cannot create a directory under " + base);
-        g_dir = tmpl;
+        const fs::path base = fs::exists("/dev/shm") ? fs::path("/dev/shm") : fs::temp_directory_path();
+        removeStaleDirs(base);
+        g_dir = base / ("ppr-fuzz-gltf-" + std::to_string(::getpid()));
+        std::error_code ec;
+        fs::remove_all(g_dir, ec);
+        if (!fs::create_directory(g_dir, ec)) fuzz::broken("cannot create " + g_dir.string());
         std::atexit([] {
             std::error_code ec;
             fs::remove_all(g_dir, ec);

@@ -59,7 +59,8 @@ TEST(EnvironmentProbe, SourceChangesNothingWithoutTheFallback) {
 }
 
 // Over every reflector pixel (psnr_reflection_db_all) against the ray-traced reference, on the camera
-// whose misses see most of the courtyard's walls (measured: docs/normalmaps.md).
+// whose misses see most of the courtyard's walls (docs/normalmaps.md, "What it gains"). Measured at
+// 320x180: ppr sky 18.62 dB, probe 20.93 dB; ssr-hiz 19.44, 22.20 dB.
 TEST(EnvironmentProbe, BeatsTheSkyAgainstTheRayTracedReference) {
     GpuFixture f;
     const char* camera = "normalmap";
