@@ -35,19 +35,31 @@ if [ -z "$techniques" ]; then
   techniques=$("$ppr" --help | sed -n '/^  --technique/,/^  --reference/p' | sed -nE 's/^    ([a-z][a-z-]*) {2,}.*/\1/p' | tr '\n' ' ')
 fi
 
-# growth LOG WARMUP: from the memory lines of one run, the per-1000-frame growth of each counter between
-# the first sample at or after WARMUP and the last one: "rss vma_allocations vma_bytes pipelines layouts pools frames"
+# growth LOG WARMUP: from the memory lines of one run, the per-1000-frame growth of each counter after
+# WARMUP: "rss heap vma_allocations vma_bytes pipelines layouts pools frames allocations pipelines".
+# VMA and the object counts are exact: last sample minus first. Resident and malloc'd memory jitter by
+# up to a few MiB with the driver's worker threads (lavapipe's transient allocations, alive or not at
+# the moment of a sample, more so on a busy machine), so they are compared by their floor: the least
+# of the first third of the samples against the least of the last third, over the frames between
+# those thirds' middles. A leak raises the floor; a transient block does not.
 growth() {
   awk -v warm="$2" '
     /^ppr: memory / {
       for (i = 3; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] }
-      if (v["frame"] + 0 >= warm + 0 && !have) { have = 1; for (k in v) first[k] = v[k] }
+      if (v["frame"] + 0 < warm + 0) next
+      n++; f[n] = v["frame"]; rss[n] = v["rss_kib"]; heap[n] = v["heap_kib"]
+      if (n == 1) for (k in v) first[k] = v[k]
       for (k in v) last[k] = v[k]
     }
+    function floorOf(a, lo, hi,   i, m) { m = a[lo]; for (i = lo; i <= hi; i++) if (a[i] < m) m = a[i]; return m }
     END {
-      if (!have) { print "none"; exit }
+      if (n == 0) { print "none"; exit }
+      t = int(n / 3); if (t < 1) t = 1
+      mid1 = (f[1] + f[t]) / 2; mid2 = (f[n - t + 1] + f[n]) / 2
       span = last["frame"] - first["frame"]; s = span > 0 ? 1000.0 / span : 0
-      printf "%.1f %.1f %.2f %.0f %d %d %d %d %d %d\n", (last["rss_kib"] - first["rss_kib"]) * s, (last["heap_kib"] - first["heap_kib"]) * s,
+      fs = mid2 > mid1 ? 1000.0 / (mid2 - mid1) : 0
+      printf "%.1f %.1f %.2f %.0f %d %d %d %d %d %d\n", (floorOf(rss, n - t + 1, n) - floorOf(rss, 1, t)) * fs,
+        (floorOf(heap, n - t + 1, n) - floorOf(heap, 1, t)) * fs,
         (last["vma_allocations"] - first["vma_allocations"]) * s, (last["vma_bytes"] - first["vma_bytes"]) * s,
         last["pipelines"] - first["pipelines"], last["descriptor_set_layouts"] - first["descriptor_set_layouts"],
         last["descriptor_pools"] - first["descriptor_pools"], span, last["vma_allocations"], last["pipelines"]

@@ -3,6 +3,7 @@
 #include "common/reflection.h"
 #include "capture/report.hpp"
 #include "metrics/contact_sheet.hpp"
+#include "metrics/error_breakdown.hpp"
 #include "render/headless_session.hpp"
 
 #include <cstdio>
@@ -66,6 +67,17 @@ std::string fileName(std::string t) {
     return t;
 }
 
+// metrics.json's error_share_worst_* and error_classes (metrics/error_breakdown.hpp).
+nlohmann::json breakdownJson(const ErrorBreakdown& b) {
+    nlohmann::json classes = nlohmann::json::object();
+    for (size_t c = 0; c < kErrorClassCount; ++c)
+        classes[errorClassName(static_cast<ErrorClass>(c))] = {{"pixels", b.pixels[c]}, {"share", b.share[c]}};
+    return {{"error_share_worst_1pct", b.worst1PercentShare},
+            {"error_share_worst_10pct", b.worst10PercentShare},
+            {"error_classes", classes},
+            {"error_classes_geometric", b.pathKnown}};
+}
+
 std::string fixed(double v, int digits) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.*f", digits, v);
@@ -113,7 +125,7 @@ int runCompare(const Options& o) {
         metrics["reference_run"] = {{"technique", truth},
                                     {"gpu_ms", techniqueMs(truth, ref)},
                                     {"frame_gpu_ms", ref.totalMedianMs},
-                                    {"images", {{"final", refFinal}, {"reflection", refReflection}, {"scored_pixels", "scored_pixels.png"}}}};
+                                    {"images", {{"final", refFinal}, {"reflection", refReflection}, {"scored_pixels", "scored_pixels.png"}, {"error_classes", "error_classes.png"}}}};
         metrics["techniques"] = nlohmann::json::object();
         std::vector<ContactTile> finals, reflections, errors;
         for (const std::string& t : o.techniques) {
@@ -132,6 +144,7 @@ int runCompare(const Options& o) {
             util::writePng((dir / reflFile).string(), reflectionDisplayImage(reflection, exposure));
             util::writePng((dir / errFile).string(), heat);
             const nlohmann::json glass = glassScores(r, ref, extent, exposure);
+            const ErrorBreakdown breakdown = breakdownErrors(r.image, ref.image, r.reflection, ref.reflection, ref.reflectedPath);
             metrics["techniques"][t] = {{"psnr_db", psnr},
                                         {"psnr_reflection_db", s.psnrDb},
                                         {"coverage", s.coverage},
@@ -141,8 +154,14 @@ int runCompare(const Options& o) {
                                         {"scored_pixels", s.maskPixels},
                                         {"covered_pixels", s.coveredPixels},
                                         {"images", {{"final", finalFile}, {"reflection", reflFile}, {"error", errFile}}}};
+            metrics["techniques"][t].update(breakdownJson(breakdown));
             metrics["techniques"][t].update(glass);
-            summary["cameras"][cam.name][t] = {{"psnr_db", psnr}, {"psnr_reflection_db", s.psnrDb}, {"coverage", s.coverage}, {"gpu_ms", ms}};
+            summary["cameras"][cam.name][t] = {{"psnr_db", psnr},
+                                               {"psnr_reflection_db", s.psnrDb},
+                                               {"coverage", s.coverage},
+                                               {"gpu_ms", ms},
+                                               {"error_share_worst_1pct", breakdown.worst1PercentShare},
+                                               {"error_share_worst_10pct", breakdown.worst10PercentShare}};
             summary["cameras"][cam.name][t].update(glass);
             if (scoresAll) {
                 const ReflectionScore a = scoreReflection(reflection, allPixels, exposure);
@@ -168,11 +187,17 @@ int runCompare(const Options& o) {
             errors.push_back({t + " error (white = 0.25)", heat});
             std::printf("ppr: %-8s %-7s PSNR %6.2f dB (reflection alone %6.2f dB)  coverage %.4f  %8.2f ms GPU (technique passes)\n",
                         cam.name.c_str(), t.c_str(), psnr, s.psnrDb, s.coverage, ms);
+            std::printf("ppr: %-8s %-7s error: worst 1%% of pixels %4.1f%%, worst 10%% %4.1f%%;", cam.name.c_str(), t.c_str(),
+                        100.0 * breakdown.worst1PercentShare, 100.0 * breakdown.worst10PercentShare);
+            for (size_t c = 0; c < kErrorClassCount; ++c)
+                if (breakdown.pixels[c]) std::printf(" %s %.1f%%", errorClassName(static_cast<ErrorClass>(c)), 100.0 * breakdown.share[c]);
+            std::printf("\n");
         }
         finals.push_back({truth + " reference (final)", ref.image});
         reflections.push_back({truth + " reference reflection", reflectionDisplayImage(ref.reflection, exposure)});
         const util::Rgba8Image scored = scoredPixelsImage(ref.reflection, ref.image);
         util::writePng((dir / "scored_pixels.png").string(), scored);
+        util::writePng((dir / "error_classes.png").string(), errorClassImage(ref.reflection, ref.reflectedPath, ref.image));
         errors.push_back({"scored pixels (white)", scored});
         std::vector<ContactTile> tiles = finals;
         tiles.insert(tiles.end(), reflections.begin(), reflections.end());

@@ -18,6 +18,9 @@ struct ShadowMap {
 struct TechniqueReflection {  // the technique's reflection image (common/reflection.h), when it has one
     graph::ImageHandle image;
 };
+struct ReflectedPath {  // planar only: per pixel, the reflected path length and its classes (planar/planar.h)
+    graph::ImageHandle image;
+};
 struct ShownReflection {  // what the composite blends: the technique's, or A/B's split of it
     graph::ImageHandle image;
 };

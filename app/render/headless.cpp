@@ -57,6 +57,7 @@ HeadlessRenderer::~HeadlessRenderer() {
     vkDestroyCommandPool(ctx_.device(), pool_, nullptr);
     vk::destroyBuffer(ctx_, readback_);
     vk::destroyBuffer(ctx_, reflectionReadback_);
+    vk::destroyBuffer(ctx_, pathReadback_);
     vk::destroyBuffer(ctx_, glassReadback_);
     vk::destroyImage(ctx_, target_);
 }
@@ -67,6 +68,7 @@ void HeadlessRenderer::ensureTargets(VkExtent2D extent) {
     vkDeviceWaitIdle(ctx_.device());
     vk::destroyBuffer(ctx_, readback_);
     vk::destroyBuffer(ctx_, reflectionReadback_);
+    vk::destroyBuffer(ctx_, pathReadback_);
     vk::destroyImage(ctx_, target_);
     target_ = vk::createImage(ctx_, extent, Renderer::kCaptureFormat,
                               VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, 1, "capture target");
@@ -84,6 +86,11 @@ void HeadlessRenderer::ensureTargets(VkExtent2D extent) {
     reflectionImport_.buffer = reflectionReadback_.buffer;
     reflectionImport_.desc = {bytes * 2};
     reflectionImport_.finalAccess = graph::Access::HostRead;
+    pathReadback_ = vk::createBuffer(ctx_, bytes * 2, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "path readback");
+    pathImport_ = {};
+    pathImport_.buffer = pathReadback_.buffer;
+    pathImport_.desc = {bytes * 2};
+    pathImport_.finalAccess = graph::Access::HostRead;
 }
 
 void HeadlessRenderer::ensureGlassReadback(uint32_t atlasSize) {
@@ -117,7 +124,7 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
     result.frames = frames;
     std::map<std::string, std::vector<double>> perPass;
     std::vector<double> totals;
-    bool reflectionCopied = false, glassCopied = false;
+    bool reflectionCopied = false, glassCopied = false, pathCopied = false;
     uint32_t lastSlot = 0;
     const uint32_t glassAtlas = settings_.values().glass.atlas;
     if (readReflection) ensureGlassReadback(glassAtlas);
@@ -163,6 +170,7 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
         if (last && readReflection) {
             req.taps.push_back(readbackTap(ReadbackSource::Reflection, &reflectionImport_, &reflectionCopied));
             req.taps.push_back(readbackTap(ReadbackSource::GlassAtlas, &glassImport_, &glassCopied));
+            req.taps.push_back(readbackTap(ReadbackSource::ReflectedPath, &pathImport_, &pathCopied));
         }
         req.dumpGraph = last && dumpGraph;
         FrameRecord rec = renderer_.record(cmd, slot, req);
@@ -191,6 +199,11 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
     if (reflectionCopied) {
         vmaInvalidateAllocation(ctx_.allocator(), reflectionReadback_.allocation, 0, VK_WHOLE_SIZE);
         result.reflection = floatImageFromHalf(reflectionReadback_.mapped, extent.width, extent.height);
+    }
+    if (pathCopied) {
+        vmaInvalidateAllocation(ctx_.allocator(), pathReadback_.allocation, 0, VK_WHOLE_SIZE);
+        const float* path = static_cast<const float*>(pathReadback_.mapped);
+        result.reflectedPath.assign(path, path + size_t(extent.width) * extent.height * 2);
     }
     if (glassCopied) {
         vmaInvalidateAllocation(ctx_.allocator(), glassReadback_.allocation, 0, VK_WHOLE_SIZE);

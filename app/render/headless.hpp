@@ -17,6 +17,9 @@ struct CaptureResult {
     util::Rgba8Image image;
     FloatImage reflection;                       // when requested and the technique has one (else 0x0)
     FloatImage glassReflection;                  // the glass reflection atlas, when requested and the frame had one
+    // planar only, when the reflection is requested: per pixel (x, y) of planar/planar.h's
+    // planar.distance (reflected path length, classes), width × height × 2 floats; else empty.
+    std::vector<float> reflectedPath;
     std::map<std::string, double> passMedianMs;  // per pass, median over the frames
     double totalMedianMs = 0.0;                  // median over frames of the per-frame sum
     uint32_t frames = 0;
@@ -87,6 +90,8 @@ private:
     graph::ExternalBuffer readbackImport_;
     vk::Buffer reflectionReadback_;  // RGBA16F
     graph::ExternalBuffer reflectionImport_;
+    vk::Buffer pathReadback_;  // RG32F (planar's ReflectedPath)
+    graph::ExternalBuffer pathImport_;
     vk::Buffer glassReadback_;       // RGBA16F, the glass atlas (sized on first use, grown with --set glass_atlas)
     graph::ExternalBuffer glassImport_;
     uint32_t glassReadbackSize_ = 0;

@@ -54,6 +54,9 @@ uint64_t memoryLogInterval() {
 void logMemoryEvery(const vk::Context& ctx, uint64_t frame) {
     const uint64_t every = memoryLogInterval();
     if (every == 0 || frame % every != 0) return;
+    // Sampled with the device idle: a frame still in flight holds command memory in the driver (up to
+    // 1 MiB on lavapipe), which would show as jitter of that size depending on timing.
+    vkDeviceWaitIdle(ctx.device());
     std::printf("%s\n", formatMemorySample(sampleMemory(ctx, frame)).c_str());
     std::fflush(stdout);
 }

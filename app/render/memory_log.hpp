@@ -25,7 +25,8 @@ std::string formatMemorySample(const MemorySample& s);  // "ppr: memory frame=..
 // Frames between samples from PPR_MEMORY_LOG (0 = off).
 uint64_t memoryLogInterval();
 
-// Prints a sample when logging is on and `frame` is a multiple of the interval.
+// Prints a sample when logging is on and `frame` is a multiple of the interval (waits for the device
+// to be idle first).
 void logMemoryEvery(const vk::Context& ctx, uint64_t frame);
 
 }  // namespace ppr::app

@@ -20,6 +20,9 @@ std::optional<graph::ImageHandle> sourceImage(ReadbackSource source, const graph
         case ReadbackSource::GlassAtlas:
             if (const passes::GlassReflection* glass = board.find<passes::GlassReflection>()) return glass->atlas;
             return std::nullopt;
+        case ReadbackSource::ReflectedPath:
+            if (const ReflectedPath* p = board.find<ReflectedPath>()) return p->image;
+            return std::nullopt;
     }
     return std::nullopt;
 }
@@ -31,6 +34,7 @@ const char* passName(ReadbackSource source) {
         case ReadbackSource::Reflection: return "readback.reflection";
         case ReadbackSource::Hierarchy: return "readback.hiz";
         case ReadbackSource::GlassAtlas: return "readback.glass";
+        case ReadbackSource::ReflectedPath: return "readback.path";
     }
     return "readback";
 }

@@ -15,6 +15,7 @@ enum class ReadbackSource {
     Reflection,  // the technique's reflection image (RGBA16F), when it has one
     Hierarchy,   // the depth hierarchy's atlas (r32f, hiz/hiz.h), when the frame built one
     GlassAtlas,  // the glass reflection atlas (RGBA16F), when a technique resolved one
+    ReflectedPath,  // planar's reflected path lengths (RG32F, planar/planar.h), for compare's error classes
 };
 
 // Copies the source into `buffer` at the end of the frame; `*copied` says whether the frame had it.

@@ -9,6 +9,8 @@ namespace ppr::app {
 enum class PprFallback : uint32_t { Ssr, None };
 enum class NormalMap : uint32_t { Off, Approx, Raymarch };
 enum class EnvSource : uint32_t { Sky, Probe };
+// PPR hole filling: none, the depth-aware rule (passes/ppr_common/ppr_resolve.glsl), or the slides' rule.
+enum class HoleRule : uint32_t { Off, Enclosed, Slides };
 
 struct ViewSettings {        // owner: frame (composite, lighting, tonemap, shadow map)
     uint32_t debug;          // gpu::kDebug* (settings/debug_views.hpp)
@@ -23,7 +25,8 @@ struct TileSettings {        // owner: tiles (tile classification, used by ppr a
     bool indirect;           // dispatch over the tile lists (false: whole screen)
 };
 struct PprSettings {         // owner: ppr
-    bool holes, filter, antibleed;
+    HoleRule holes;
+    bool filter, antibleed;
     bool tiles;              // per-tile reflector culling in the projection
     PprFallback fallback;
     NormalMap normalMap;     // the bonus slides' normal-map approximation in the reflection pass

@@ -114,7 +114,9 @@ void validate(const SettingDecl& d, const std::string& value) {
 const std::vector<SettingDecl>& settingDecls() {
     static const std::vector<SettingDecl> decls = {
         debugSetting(),
-        toggle("holes", "ppr", [](FrameSettings& s) -> bool& { return s.ppr.holes; }, true, "PPR hole filling from the neighbour with the shortest offset"),
+        choice<HoleRule>("holes", "ppr", [](FrameSettings& s) -> HoleRule& { return s.ppr.holes; }, {"0", "1", "slides"}, "1",
+                         "PPR hole filling: 0 none; 1 a pixel takes a neighbour's data only where the nearer layer encloses it "
+                         "(or it has none); slides: the slides' rule (the neighbour with the shortest offset, 4 neighbours)"),
         toggle("filter", "ppr", [](FrameSettings& s) -> bool& { return s.ppr.filter; }, true,
                "PPR filtered (bilinear, encoded fractions) colour sample instead of point"),
         toggle("antibleed", "ppr", [](FrameSettings& s) -> bool& { return s.ppr.antibleed; }, true,

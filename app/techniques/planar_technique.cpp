@@ -1,10 +1,16 @@
 #include "techniques/planar_technique.hpp"
 
+#include "frame/frame_resources.hpp"
+
 namespace ppr::app {
+
+passes::PlanarReflectors PlanarTechnique::reflectors(const TechniqueFrame& f) {
+    return {f.reflectorData(), f.services.reflectors.buffer().count()};
+}
 
 std::optional<graph::ImageHandle> PlanarTechnique::addReference(TechniqueFrame& f) {
     const std::vector<passes::PlanarView>& views = f.services.constants.mirroredViews(f.services.reflectors);
-    return pass_.add(f.graph, f.in, f.gbuffer, f.shadowMap, views, f.reflectorData());
+    return pass_.add(f.graph, f.in, f.gbuffer, f.shadowMap, views, reflectors(f)).reflection;
 }
 
 std::optional<graph::ImageHandle> PlanarTechnique::addReflection(TechniqueFrame& f) {
@@ -12,7 +18,11 @@ std::optional<graph::ImageHandle> PlanarTechnique::addReflection(TechniqueFrame&
     const std::vector<passes::PlanarView>& views = s.constants.mirroredViews(s.reflectors);
     const std::optional<GlassRegionsBound> bound =
         s.glass.packAndUpload(f.graph, f.slot, f.settings.glass, s.reflectors, s.constants.main().viewProj, f.camera.position, f.in.extent);
-    if (!bound) return pass_.add(f.graph, f.in, f.gbuffer, f.shadowMap, views, f.reflectorData());
+    if (!bound) {
+        const passes::PlanarOutputs out = pass_.add(f.graph, f.in, f.gbuffer, f.shadowMap, views, reflectors(f));
+        f.board.put(ReflectedPath{out.path});
+        return out.reflection;
+    }
     passes::PlanarGlass glass;
     glass.regions = bound->buffers.table;
     glass.regionList = bound->buffers.list;
@@ -23,10 +33,10 @@ std::optional<graph::ImageHandle> PlanarTechnique::addReflection(TechniqueFrame&
     glassPlaneGroups_.assign(groups.planeGroupCount, false);
     for (const scene::GlassRegion& r : s.glass.stats(f.slot)->layout) glassPlaneGroups_[groups.planeGroup[r.reflectorIndex]] = true;
     glass.planeGroups = &glassPlaneGroups_;
-    graph::ImageHandle glassAtlas;
-    const graph::ImageHandle reflection = pass_.add(f.graph, f.in, f.gbuffer, f.shadowMap, views, f.reflectorData(), &glass, &glassAtlas);
-    f.board.put(passes::GlassReflection{glassAtlas, bound->buffers.table});
-    return reflection;
+    const passes::PlanarOutputs out = pass_.add(f.graph, f.in, f.gbuffer, f.shadowMap, views, reflectors(f), &glass);
+    f.board.put(passes::GlassReflection{out.glass, bound->buffers.table});
+    f.board.put(ReflectedPath{out.path});
+    return out.reflection;
 }
 
 }  // namespace ppr::app

@@ -16,6 +16,7 @@ public:
     std::optional<graph::ImageHandle> addReference(TechniqueFrame& frame) override;
 
 private:
+    static passes::PlanarReflectors reflectors(const TechniqueFrame& f);
     passes::PlanarPass pass_;
     std::vector<bool> glassPlaneGroups_;  // plane groups holding a pane with a region (reused per frame)
 };

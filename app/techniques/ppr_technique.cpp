@@ -11,7 +11,8 @@ namespace {
 
 uint32_t resolveFlags(const PprSettings& s) {  // holes / filter / antibleed
     uint32_t flags = 0;
-    if (s.holes) flags |= gpu::kPprHoleFilling;
+    if (s.holes != HoleRule::Off) flags |= gpu::kPprHoleFilling;
+    if (s.holes == HoleRule::Enclosed) flags |= gpu::kPprHoleEnclosed;
     if (s.filter) flags |= gpu::kPprFiltering;
     if (s.antibleed) flags |= gpu::kPprAntiBleeding;
     return flags;

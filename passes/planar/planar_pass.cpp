@@ -20,17 +20,19 @@ PlanarPass::PlanarPass(const vk::Context& ctx, const GBufferPass& gbuffer, const
     glassResolve_ = shader::createComputePipeline(ctx, PPR_SPIRV(planar_glass_resolve_comp), glassLayout, "planar.glass");
 }
 
-graph::ImageHandle PlanarPass::add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::ImageHandle shadowMap,
-                                   const std::vector<PlanarView>& views, VkBuffer reflectors, const PlanarGlass* glass,
-                                   graph::ImageHandle* glassOut) const {
+PlanarOutputs PlanarPass::add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::ImageHandle shadowMap,
+                              const std::vector<PlanarView>& views, PlanarReflectors reflectors, const PlanarGlass* glass) const {
     // Start from "no reflection" everywhere; each plane group's resolve fills its own pixels.
-    graph::ImageHandle reflection = addClearPass(
+    PlanarOutputs out;
+    graph::ImageHandle& reflection = out.reflection;
+    reflection = addClearPass(
         g, "planar.clear", g.createImage("planar.reflection", {in.extent.width, in.extent.height, PprReflectPass::kReflectionFormat, 1}), {});
+    out.path = addClearPass(g, "planar.distance.clear", g.createImage("planar.distance", {in.extent.width, in.extent.height, kPathFormat, 1}), {});
     if (glass) {
         const uint32_t size = glass->atlasSize;
-        *glassOut = addClearPass(g, "planar.glass.clear", g.createImage("planar.glass", {size, size, GlassReflectPass::kFormat, 1}), {});
+        out.glass = addClearPass(g, "planar.glass.clear", g.createImage("planar.glass", {size, size, GlassReflectPass::kFormat, 1}), {});
     }
-    if (views.empty()) return reflection;
+    if (views.empty()) return out;
     GBuffer mirrored = GBufferPass::createTargets(g, "planar.gbuffer", in.extent);
     graph::ImageHandle mirroredColor = g.createImage("planar.color", {in.extent.width, in.extent.height, LightingPass::kColorFormat, 1});
     for (const PlanarView& v : views) {
@@ -53,10 +55,12 @@ graph::ImageHandle PlanarPass::add(graph::RenderGraph& g, const FrameInputs& in,
         };
         gpu::PlanarResolvePush push{};
         push.planeGroup = v.planeGroup;
+        push.reflectorCount = reflectors.count;
         resolvePass("planar.resolve." + plane, resolve_)
             .sampled(gb.reflector, in.samplers->nearestClamp)
-            .hostStorage(reflectors)
+            .hostStorage(reflectors.data)
             .storageReadWrite(reflection, &reflection)
+            .storageReadWrite(out.path, &out.path)
             .push(push)
             .dispatch(in.extent, gpu::kPlanarGroupSize);
         if (!glass || glass->usedHeight == 0 || !(*glass->planeGroups)[v.planeGroup]) continue;
@@ -64,14 +68,14 @@ graph::ImageHandle PlanarPass::add(graph::RenderGraph& g, const FrameInputs& in,
         glassPush.planeGroup = v.planeGroup;
         glassPush.regionCount = glass->regionCount;
         resolvePass("planar.glass." + plane, glassResolve_)
-            .hostStorage(reflectors)
+            .hostStorage(reflectors.data)
             .storageRead(glass->regions)
             .storageRead(glass->regionList)
-            .storageReadWrite(*glassOut, glassOut)
+            .storageReadWrite(out.glass, &out.glass)
             .push(glassPush)
             .dispatch({glass->atlasSize, glass->usedHeight}, gpu::kPlanarGroupSize);
     }
-    return reflection;
+    return out;
 }
 
 }  // namespace ppr::passes

@@ -23,14 +23,24 @@ struct PlanarGlass {
     const std::vector<bool>* planeGroups = nullptr;  // per plane group: does it hold a pane with a region?
 };
 
+struct PlanarReflectors {
+    VkBuffer data = VK_NULL_HANDLE;  // ReflectorData[count]
+    uint32_t count = 0;
+};
+
+struct PlanarOutputs {
+    graph::ImageHandle reflection;  // common/reflection.h
+    graph::ImageHandle path;        // rg32f, planar.h planar.distance: reflected path length and classes
+    graph::ImageHandle glass;       // with PlanarGlass: the panels' rgba16f atlas (same layout); else invalid
+};
+
 class PlanarPass {
 public:
     PlanarPass(const vk::Context& ctx, const GBufferPass& gbuffer, const LightingPass& lighting);
-    // Returns the reflection image (common/reflection.h); views may be empty (nothing visible). With
-    // `glass`, also resolves the glass panels' regions into `glassOut` (rgba16f atlas, same layout).
-    graph::ImageHandle add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::ImageHandle shadowMap,
-                           const std::vector<PlanarView>& views, VkBuffer reflectors, const PlanarGlass* glass = nullptr,
-                           graph::ImageHandle* glassOut = nullptr) const;
+    // Views may be empty (nothing visible). With `glass`, also resolves the glass panels' regions.
+    PlanarOutputs add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::ImageHandle shadowMap,
+                      const std::vector<PlanarView>& views, PlanarReflectors reflectors, const PlanarGlass* glass = nullptr) const;
+    static constexpr VkFormat kPathFormat = VK_FORMAT_R32G32_SFLOAT;
 
 private:
     const vk::Context& ctx_;

@@ -18,9 +18,27 @@ layout(set = 0, binding = 6) uniform sampler2D mainDepth;
 layout(set = 0, binding = 7) uniform usampler2D reflectorTex;
 layout(set = 0, binding = 8, scalar) readonly buffer Reflectors { ReflectorData reflectors[]; };
 layout(set = 0, binding = 9, rgba16f) uniform image2D reflection;
+layout(set = 0, binding = 10, rg32f) uniform writeonly image2D reflectedPath;  // planar.h: planar.distance
 layout(push_constant, scalar) uniform Push { PlanarResolvePush pc; };
 
 #include "planar/planar_visibility.glsl"
+
+// Is the reflected point q, seen in reflector `self`, also reflected to the eye by a parallel shape
+// nearer to it (between q and self's plane)? See kPlanarParallelShape.
+bool nearerParallelShape(vec3 q, uint self) {
+    ReflectorData r = reflectors[self];
+    float own = dot(q - r.center, r.normal);
+    vec3 eye = frame.cameraPos.xyz;
+    for (uint j = 0u; j < pc.reflectorCount; ++j) {
+        ReflectorData o = reflectors[j];
+        if (j == self || o.orientationGroup != r.orientationGroup) continue;
+        float d = dot(q - o.center, o.normal), eyeHeight = dot(eye - o.center, o.normal);
+        if (d <= 0.0 || d >= own || eyeHeight <= 0.0) continue;
+        vec3 mirrored = q - 2.0 * d * o.normal;
+        if (reflectorContains(o, mix(eye, mirrored, eyeHeight / (eyeHeight + d)))) return true;
+    }
+    return false;
+}
 
 void main() {
     ivec2 pix = ivec2(gl_GlobalInvocationID.xy);
@@ -28,4 +46,12 @@ void main() {
     uint id = texelFetch(reflectorTex, pix, 0).r;
     if (id == 0u || reflectors[id - 1u].planeGroup != pc.planeGroup) return;
     imageStore(reflection, pix, planarSample(pix));
+    float depth = texelFetch(mirroredDepth, pix, 0).r;
+    vec2 path = vec2(0.0);
+    if (depth > 0.0) {
+        vec4 p = mirrored.invViewProj * vec4(((vec2(pix) + 0.5) * frame.invScreenSize) * 2.0 - 1.0, depth, 1.0);
+        vec3 q = p.xyz / p.w;
+        path = vec2(distance(q, mirrored.cameraPos.xyz), nearerParallelShape(q, id - 1u) ? kPlanarParallelShape : 0.0);
+    }
+    imageStore(reflectedPath, pix, vec4(path, 0.0, 0.0));
 }

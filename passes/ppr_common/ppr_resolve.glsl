@@ -32,6 +32,71 @@ vec3 reduceColorBleeding(vec3 filtered, vec3 unfiltered) {
     return max(yCoCgToRgb(vec3(y, coCg)), vec3(0.0)) / exposure;
 }
 
+// The depth-aware hole rule (holes=1). The slides' rule grows a near object by a pixel into whatever
+// lies behind it: at its silhouette, a neighbour's shorter offset looks like a first-layer hole.
+// Here a texel with data takes a neighbour's only when the nearer layer encloses it: both its
+// horizontal or both its vertical neighbours hold a significantly (kPprHoleMinDistance) shorter
+// offset. An empty texel looks up to kPprHoleReach texels each way (holes in a magnified layer are
+// that wide) and takes the nearer side of the direction whose two sides agree best, i.e. the layer it
+// lies inside; with no direction holding data on both sides, the nearest layer around it, as the
+// slides do. The diagonals were measured too: slower, and no better (docs/quality.md).
+struct PprSide {
+    uint value;    // the shortest offset within reach on this side (kPprClearValue: none)
+    ivec2 texel;
+};
+
+PprSide nearestOnSide(ivec2 texel, ivec2 step, int reach) {
+    PprSide side;
+    side.value = kPprClearValue;
+    side.texel = texel;
+    for (int k = 1; k <= reach; ++k) {
+        uint v = fetchValue(texel + step * k);
+        if (v < side.value) {
+            side.value = v;
+            side.texel = texel + step * k;
+        }
+    }
+    return side;
+}
+
+ivec2 enclosedHoleSource(ivec2 texel, uint v0) {
+    const ivec2 directions[2] = ivec2[2](ivec2(1, 0), ivec2(0, 1));
+    bool empty = v0 == kPprClearValue;
+    vec2 own = empty ? vec2(0.0) : fullOffset(v0);
+    uint best = v0;
+    ivec2 bestTexel = texel;
+    float bestSpread = 3.4e38;  // empty: how far apart the chosen direction's two sides are
+    uint anyBest = kPprClearValue;
+    ivec2 anyTexel = texel;
+    for (int k = 0; k < 2; ++k) {
+        int reach = empty ? kPprHoleReach : 1;
+        PprSide a = nearestOnSide(texel, directions[k], reach), b = nearestOnSide(texel, -directions[k], reach);
+        PprSide nearer = a.value < b.value ? a : b;
+        if (empty) {
+            if (nearer.value < anyBest) {
+                anyBest = nearer.value;
+                anyTexel = nearer.texel;
+            }
+            if (a.value == kPprClearValue || b.value == kPprClearValue) continue;
+            float spread = distance(fullOffset(a.value), fullOffset(b.value));
+            if (spread < bestSpread) {
+                bestSpread = spread;
+                best = nearer.value;
+                bestTexel = nearer.texel;
+            }
+            continue;
+        }
+        if (a.value >= v0 || b.value >= v0) continue;
+        if (distance(own, fullOffset(a.value)) <= kPprHoleMinDistance || distance(own, fullOffset(b.value)) <= kPprHoleMinDistance) continue;
+        if (nearer.value < best) {
+            best = nearer.value;
+            bestTexel = nearer.texel;
+        }
+    }
+    if (empty && best == kPprClearValue) return anyTexel;  // no two sides to compare: the nearest layer around
+    return bestTexel;
+}
+
 struct PprResolved {
     bool valid;
     vec3 color;
@@ -45,10 +110,12 @@ PprResolved pprResolve(ivec2 texel, vec2 screenCentre, float pixelsPerTexel, uin
     r.color = vec3(0.0);
     r.source = screenCentre;
     uint v0 = fetchValue(texel);
-    // Hole filling: take the neighbour with the smallest offset when this texel has no data, or when
-    // that neighbour's offset is significantly (kPprHoleMinDistance) shorter — a hole in the first
-    // reflection layer. The slides' four neighbours.
-    if ((flags & kPprHoleFilling) != 0u) {
+    // Hole filling. holes=1: enclosedHoleSource. holes=slides: take the neighbour with the smallest
+    // offset when this texel has no data, or when that neighbour's offset is significantly
+    // (kPprHoleMinDistance) shorter — a hole in the first reflection layer; the slides' four neighbours.
+    if ((flags & kPprHoleEnclosed) != 0u) {
+        r.readTexel = enclosedHoleSource(texel, v0);
+    } else if ((flags & kPprHoleFilling) != 0u) {
         const ivec2 n1 = ivec2(1, 0), n2 = ivec2(0, 1), n3 = ivec2(1, 1), n4 = ivec2(-1, 0);
         uint v1 = fetchValue(texel + n1), v2 = fetchValue(texel + n2), v3 = fetchValue(texel + n3), v4 = fetchValue(texel + n4);
         uint vmin = min(min(min(v0, v1), min(v2, v3)), v4);

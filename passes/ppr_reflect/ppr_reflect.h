@@ -16,6 +16,10 @@ PPR_CONST(uint, kPprNormalRaymarch, 32u)
 // screen edge. With kPprEnvironmentProbe (env_source=probe) it is the reflection probe, else the sky.
 PPR_CONST(uint, kPprEnvironment, 64u)
 PPR_CONST(uint, kPprEnvironmentProbe, 128u)
+// holes=1: the depth-aware hole rule (ppr_resolve.glsl); kPprHoleFilling alone is holes=slides.
+PPR_CONST(uint, kPprHoleEnclosed, 256u)
+// How far (texels) the depth-aware rule looks on each side for the enclosing nearer layer.
+PPR_CONST(int, kPprHoleReach, 2)
 // Taps of the normalmap=raymarch march between the pixel and the approximated reflection.
 PPR_CONST(uint, kPprNormalTaps, 4u)
 // Hole filling replaces a pixel's own data only when a neighbour's offset is this much shorter

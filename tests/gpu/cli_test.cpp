@@ -115,7 +115,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInput{"missing_scene", "--scene /nonexistent/scene.gltf", "/nonexistent/scene.gltf"},
                       BadInput{"unknown_technique", "--technique raytracing", "available"}, BadInput{"unknown_option", "--bogus", "unknown option"},
                       BadInput{"ppr_size_beyond_encoding", "--size 4100x64", "4096"},
-                      BadInput{"bad_toggle", "--set holes=2", "expected one of 0|1"},
+                      BadInput{"bad_toggle", "--set filter=2", "expected one of 0|1"},
                       BadInput{"nan_reflector", "--reflectors " PPR_TEST_DATA_DIR "/reflectors/bad_nan.json", "bad_nan.json"},
                       BadInput{"missing_reflectors", "--reflectors /nonexistent/r.json", "/nonexistent/r.json"},
                       BadInput{"gltf_index_out_of_range", "--scene /usr/share/assimp/models/glTF2/IndexOutOfRange/IndexOutOfRange.gltf", "IndexOutOfRange.gltf"},

@@ -4,6 +4,12 @@
 //   ppr_before_normalmaps.json  PPR with normalmap=off fallback_env=0, recorded by the build of
 //                               e32db7c, whose off+env0 images scripts/check-identical.sh had shown
 //                               identical to PPR before normal maps (on this scene file);
+//   ppr_before_hole_rule.json   PPR with the default settings, recorded by the same build: the slides'
+//                               hole rule, which the current build keeps as holes=slides (issue 19's
+//                               "holes=slides reproduces today's images"; ce8b37b's defaults render
+//                               as e32db7c's, fallback_env being 0).
+// `current` holds the settings the current build adds to keep the old behaviour (options the
+// recording build did not have).
 // On another device (another driver rasterizes and rounds differently) the test is skipped with a
 // message: goldens are per device. To record a golden with another build:
 //   PPR_GOLDEN_RECORD=path/to/ppr build/release/tests/gpu/ppr_gpu_tests --gtest_filter='Golden*'
@@ -21,10 +27,12 @@ namespace {
 
 struct Golden {
     const char* file;
-    const char* sets;  // --set arguments, as given to both builds
+    const char* sets;     // --set arguments, as given to both builds
+    const char* current;  // and added for the current build
 };
 const Golden kGoldens[] = {
-    {"ppr_before_normalmaps.json", "--set normalmap=off --set fallback_env=0"},
+    {"ppr_before_normalmaps.json", "--set normalmap=off --set fallback_env=0", "--set holes=slides"},
+    {"ppr_before_hole_rule.json", "", "--set holes=slides"},
 };
 constexpr const char* kSize = "320x180";
 
@@ -61,11 +69,11 @@ TEST(Golden, SwitchedOffModesKeepTheOldPictures) {
         std::ifstream in(path);
         ASSERT_TRUE(in) << path;
         const nlohmann::json golden = nlohmann::json::parse(in);
-        const nlohmann::json now = captureHashes(PPR_EXE, g.sets, out);
+        const nlohmann::json now = captureHashes(PPR_EXE, std::string(g.sets) + " " + g.current, out);
         if (now["device"] != golden["device"]) GTEST_SKIP() << g.file << " was recorded on " << golden["device"] << ", this is " << now["device"];
         ASSERT_EQ(now["cameras"].size(), golden["cameras"].size()) << g.file;
         for (const auto& [camera, hash] : golden["cameras"].items())
-            EXPECT_EQ(now["cameras"][camera], hash) << g.file << ": camera " << camera << " (" << g.sets << ") changed";
+            EXPECT_EQ(now["cameras"][camera], hash) << g.file << ": camera " << camera << " (" << g.sets << " " << g.current << ") changed";
         std::filesystem::remove_all(out);
     }
 }

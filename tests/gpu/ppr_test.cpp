@@ -1,6 +1,7 @@
 // PPR against the planar ground truth on the default scene's named cameras, and PPR's invariants
 // (toggles, debug views), with validation + synchronization validation on.
 #include "metrics/compare_metrics.hpp"
+#include "metrics/error_breakdown.hpp"
 #include "gpu_test_util.hpp"
 #include "scene/camera.hpp"
 
@@ -31,8 +32,8 @@ struct Expected {
     double reflectionDb;   // psnr_reflection_db: the reflection alone
 };
 const std::map<std::string, Expected> kExpected = {
-    {"overview", {21.6, 18.4}}, {"puddles", {29.7, 20.0}}, {"grazing", {33.6, 25.2}},
-    {"stairs", {37.4, 22.0}},   {"mirror", {19.2, 17.3}},
+    {"overview", {25.3, 20.6}}, {"puddles", {30.3, 23.4}}, {"grazing", {35.6, 27.0}},
+    {"stairs", {37.9, 22.3}},   {"mirror", {22.9, 20.6}},
 };
 
 TEST(PprVsPlanar, EveryNamedCameraMatchesTheGroundTruth) {
@@ -70,6 +71,38 @@ TEST(PprVsPlanar, HoleFillingRaisesCoverage) {
     }
     std::printf("mean coverage: holes=1 %.4f, holes=0 %.4f\n", with / 3, without / 3);
     EXPECT_GT(with / 3, without / 3 + 0.02) << "hole filling should cover the stretched reflections' gaps";
+    EXPECT_EQ(f.ctx->validationErrors(), 0u);
+}
+
+// Issue 19: the depth-aware hole rule (holes=1) against the slides' (holes=slides), flat mirrors
+// (normalmap=off: planar is exact only for them). Measured at 640x360 on lavapipe (docs/quality.md):
+// it gains 0.5 to 3.8 dB on every camera, and the error of the worst 1 % of pixels falls on every
+// camera. (It does not yet reach ssr-brute everywhere: docs/quality.md.)
+TEST(PprHoleRule, BeatsTheSlidesRuleOnEveryCamera) {
+    GpuFixture f;
+    f.headless->settings().set("normalmap", "off");
+    for (const std::string camera : {"overview", "puddles", "grazing", "stairs", "mirror", "normalmap"}) {
+        const app::CaptureResult ref = [&] {
+            f.headless->setTechnique("planar");
+            return f.headless->capture(f.camera(camera), kSize, 1, false, true);
+        }();
+        struct Score {
+            double db, worst1;  // composited PSNR; squared error of the worst 1 % of scored pixels
+        };
+        auto score = [&](const char* holes) {
+            f.headless->settings().set("holes", holes);
+            const Rendered r = render(f, "ppr", camera);
+            const app::ErrorBreakdown b = app::breakdownErrors(r.final, ref.image, r.reflection, ref.reflection, ref.reflectedPath);
+            return Score{app::compositedPsnrDb(r.final, ref.image, ref.reflection), b.worst1PercentShare * b.squaredError};
+        };
+        const Score slides = score("slides"), rule = score("1");
+        std::printf("%-9s psnr_db slides %.2f -> holes=1 %.2f; worst 1%% squared error %.3f -> %.3f\n", camera.c_str(), slides.db, rule.db,
+                    slides.worst1, rule.worst1);
+        EXPECT_GE(rule.db, slides.db + 0.25) << camera;
+        EXPECT_LT(rule.worst1, slides.worst1) << camera;
+        EXPECT_FALSE(ref.reflectedPath.empty()) << "planar publishes its reflected paths";
+    }
+    f.headless->settings().set("holes", "1");
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
 

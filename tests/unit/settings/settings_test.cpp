@@ -33,7 +33,8 @@ TEST(Settings, DefaultsReadBackAsDeclared) {
 TEST(Settings, DecodesIntoTypedFields) {
     Settings s;
     const FrameSettings& v = s.values();
-    EXPECT_TRUE(v.ppr.holes && v.ppr.filter && v.ppr.antibleed && v.ppr.tiles && v.tiles.indirect && v.glass.enabled);
+    EXPECT_EQ(v.ppr.holes, HoleRule::Enclosed);
+    EXPECT_TRUE(v.ppr.filter && v.ppr.antibleed && v.ppr.tiles && v.tiles.indirect && v.glass.enabled);
     EXPECT_EQ(v.ppr.fallback, PprFallback::Ssr);
     EXPECT_FLOAT_EQ(v.ssr.distance, 40.0f);
     EXPECT_EQ(v.ssr.thickness, 0.05f);
@@ -46,7 +47,9 @@ TEST(Settings, DecodesIntoTypedFields) {
     s.apply("ssr_thickness=0.125");
     s.apply("glass_atlas=256");
     s.apply("debug=shadow");
-    EXPECT_FALSE(v.ppr.holes);
+    EXPECT_EQ(v.ppr.holes, HoleRule::Off);
+    s.apply("holes=slides");
+    EXPECT_EQ(v.ppr.holes, HoleRule::Slides);
     EXPECT_EQ(v.ppr.fallback, PprFallback::None);
     EXPECT_EQ(v.ssr.thickness, 0.125f);
     EXPECT_EQ(v.glass.atlas, 256u);
@@ -76,7 +79,7 @@ void expectRejected(const std::string& assignment, const std::string& fragment) 
 
 TEST(Settings, RejectsBadValuesNamingKeyAndWhatIsAccepted) {
     expectRejected("colour=red", "known keys: debug");
-    expectRejected("holes=2", "expected one of 0|1");
+    expectRejected("holes=2", "expected one of 0|1|slides");
     expectRejected("debug=sparkles", "expected one of none|albedo");
     expectRejected("ssr_distance=nan", "ssr_distance=nan: expected a number in [0.1, 1000]");
     expectRejected("ssr_distance=1e9", "expected a number");
@@ -91,7 +94,7 @@ TEST(Settings, UsageListsEveryKeyWithItsDefaultAndOwner) {
     const std::string usage = settingsUsage();
     for (const SettingDecl& d : settingDecls())
         EXPECT_NE(usage.find("    " + d.key + "="), std::string::npos) << d.key << "\n" << usage;
-    EXPECT_NE(usage.find("holes=0|1 (default 1; ppr)"), std::string::npos) << usage;
+    EXPECT_NE(usage.find("holes=0|1|slides (default 1; ppr)"), std::string::npos) << usage;
     EXPECT_NE(usage.find("glass_atlas=[64, 8192] (default 1024; glass)"), std::string::npos) << usage;
 }
 
