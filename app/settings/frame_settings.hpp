@@ -28,6 +28,7 @@ struct PprSettings {         // owner: ppr
     HoleRule holes;
     bool filter, antibleed;
     bool tiles;              // per-tile reflector culling in the projection
+    bool facing;             // project only surfaces that face the mirrored eye
     PprFallback fallback;
     NormalMap normalMap;     // the bonus slides' normal-map approximation in the reflection pass
 };

@@ -117,6 +117,9 @@ const std::vector<SettingDecl>& settingDecls() {
         choice<HoleRule>("holes", "ppr", [](FrameSettings& s) -> HoleRule& { return s.ppr.holes; }, {"0", "1", "slides"}, "1",
                          "PPR hole filling: 0 none; 1 a pixel takes a neighbour's data only where the nearer layer encloses it "
                          "(or it has none); slides: the slides' rule (the neighbour with the shortest offset, 4 neighbours)"),
+        toggle("facing", "ppr", [](FrameSettings& s) -> bool& { return s.ppr.facing; }, true,
+               "PPR projects only surfaces that face the mirrored eye (one seen from behind is hidden in the reflection by its "
+               "object's front; 0: every surface, as the slides)"),
         toggle("filter", "ppr", [](FrameSettings& s) -> bool& { return s.ppr.filter; }, true,
                "PPR filtered (bilinear, encoded fractions) colour sample instead of point"),
         toggle("antibleed", "ppr", [](FrameSettings& s) -> bool& { return s.ppr.antibleed; }, true,

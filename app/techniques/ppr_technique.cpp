@@ -63,6 +63,8 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
     project.tilesX = tiles.tilesX;
     project.tilesY = tiles.tilesY;
     project.cullTiles = s.tiles;
+    project.normal = f.gbuffer.normal;
+    project.facingOnly = s.facing;
     passes::GlassRegionBuffers regions;
     addGlass(f, project, regions);
     const passes::PprProjectOutputs scatter = project_.add(f.graph, f.in, binding, project);

@@ -26,6 +26,7 @@ layout(set = 0, binding = 8, scalar) readonly buffer PlaneLeaders { uint planeLe
 // Glass panels: their own intermediate buffer, an atlas with one region per visible panel this frame.
 layout(set = 0, binding = 9, r32ui) uniform uimage2D glassAtlas;
 layout(set = 0, binding = 10, scalar) readonly buffer GlassRegions { GlassRegionData glassRegions[]; };  // per reflector
+layout(set = 0, binding = 11) uniform sampler2D normalTex;  // G-buffer normal (pc.facingOnly)
 layout(push_constant, scalar) uniform Push { PprProjectPush pc; };
 
 const uint kThreads = kPprTileSize * kPprTileSize;
@@ -215,6 +216,7 @@ void main() {
     if (!valid) return;
 
     vec3 eye = frame.cameraPos.xyz;
+    vec3 surfaceNormal = pc.facingOnly != 0u ? texelFetch(normalTex, pix, 0).xyz : vec3(0.0);
     float above = kPprAboveEpsilon + kPprAboveEpsilonPerMetre * distance(eye, p);
 
     // Reflectors arrive sorted by orientation. Within one orientation only the shape nearest to the
@@ -244,6 +246,10 @@ void main() {
         float eyeHeight = dot(eye - r.center, r.normal);
         if (eyeHeight <= 0.0) continue;  // the camera sees this reflector from behind
         vec3 mirrored = p - 2.0 * d * r.normal;
+        if (pc.facingOnly != 0u) {  // seen from behind by the mirrored eye: hidden in this reflection
+            vec3 mirroredEye = eye - 2.0 * eyeHeight * r.normal;
+            if (dot(surfaceNormal, normalize(mirroredEye - p)) < kPprFacingCos) continue;
+        }
         // Ray from the camera to the mirrored point crosses the plane at eyeHeight / (eyeHeight + d).
         vec3 hit = mix(eye, mirrored, eyeHeight / (eyeHeight + d));
         if (!reflectorContains(r, hit)) continue;

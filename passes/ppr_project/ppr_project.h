@@ -7,6 +7,10 @@
 // distance to the camera for depth-reconstruction error), so the reflector surface never reflects itself.
 PPR_CONST(float, kPprAboveEpsilon, 1e-3f)
 PPR_CONST(float, kPprAboveEpsilonPerMetre, 1e-4f)
+// --set facing=1: a surface the mirrored eye sees from behind is hidden in the reflection (by the
+// front of the same object), so it is not projected. Below this cosine between its G-buffer normal
+// and the direction to the mirrored eye it counts as facing away (a margin for normal maps).
+PPR_CONST(float, kPprFacingCos, -0.05f)
 
 PPR_BEGIN
 struct PprProjectPush {
@@ -15,7 +19,8 @@ struct PprProjectPush {
     uint tilesX;          // tiles per row: index of the per-tile survivor count
     uint cullPlaneCount;  // ≤ kPprMaxCullPlanes (ppr_common/tile_culling.h)
     uint glass;           // 1: glass reflectors write into their atlas regions (--set glass=1); 0: skipped
-    uint pad0, pad1, pad2;
+    uint facingOnly;      // 1: a pixel whose surface faces away from the mirrored eye writes nothing (--set facing=1)
+    uint pad1, pad2;
 };
 PPR_END
 PPR_SIZE_CHECK(PprProjectPush, 32);

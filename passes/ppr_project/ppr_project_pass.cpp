@@ -24,6 +24,7 @@ PprProjectOutputs PprProjectPass::add(graph::RenderGraph& g, const FrameInputs& 
     push.tilesX = inputs.tilesX;
     push.cullPlaneCount = r.cullPlanes;
     push.glass = inputs.glass ? 1u : 0u;
+    push.facingOnly = inputs.facingOnly ? 1u : 0u;
     PprProjectOutputs out;
     graph::BufferHandle survivors = g.createBuffer("ppr.tile_survivors", {sizeof(uint32_t) * inputs.tilesX * inputs.tilesY});
     ComputePass(g, ctx_, "ppr.project", pipeline_)
@@ -38,6 +39,7 @@ PprProjectOutputs PprProjectPass::add(graph::RenderGraph& g, const FrameInputs& 
         .hostStorage(r.planeLeaders)
         .storageReadWrite(inputs.glassAtlas, &out.glassAtlas)
         .storageRead(inputs.glassRegions)
+        .sampled(inputs.normal, in.samplers->nearestClamp)
         .push(push)
         .dispatch(in.extent, gpu::kPprTileSize);
     return out;

@@ -24,6 +24,8 @@ struct PprProjectInputs {
     graph::ImageHandle glassAtlas;    // r32ui, cleared (glass panels' intermediate buffer)
     graph::BufferHandle glassRegions;  // GlassRegionData per reflector (glass_reflect/glass_regions.hpp)
     bool glass = true;                // --set glass
+    graph::ImageHandle normal;        // G-buffer normal (read with facingOnly)
+    bool facingOnly = true;           // --set facing
 };
 
 struct PprProjectOutputs {

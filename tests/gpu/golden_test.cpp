@@ -5,9 +5,9 @@
 //                               e32db7c, whose off+env0 images scripts/check-identical.sh had shown
 //                               identical to PPR before normal maps (on this scene file);
 //   ppr_before_hole_rule.json   PPR with the default settings, recorded by the same build: the slides'
-//                               hole rule, which the current build keeps as holes=slides (issue 19's
-//                               "holes=slides reproduces today's images"; ce8b37b's defaults render
-//                               as e32db7c's, fallback_env being 0).
+//                               reflection pass, which the current build keeps as holes=slides
+//                               facing=0 (issue 19's "holes=slides reproduces today's images";
+//                               ce8b37b's defaults render as e32db7c's, fallback_env being 0).
 // `current` holds the settings the current build adds to keep the old behaviour (options the
 // recording build did not have).
 // On another device (another driver rasterizes and rounds differently) the test is skipped with a
@@ -31,8 +31,8 @@ struct Golden {
     const char* current;  // and added for the current build
 };
 const Golden kGoldens[] = {
-    {"ppr_before_normalmaps.json", "--set normalmap=off --set fallback_env=0", "--set holes=slides"},
-    {"ppr_before_hole_rule.json", "", "--set holes=slides"},
+    {"ppr_before_normalmaps.json", "--set normalmap=off --set fallback_env=0", "--set holes=slides --set facing=0"},
+    {"ppr_before_hole_rule.json", "", "--set holes=slides --set facing=0"},
 };
 constexpr const char* kSize = "320x180";
 

@@ -33,7 +33,7 @@ struct Expected {
 };
 const std::map<std::string, Expected> kExpected = {
     {"overview", {25.3, 20.6}}, {"puddles", {30.3, 23.4}}, {"grazing", {35.6, 27.0}},
-    {"stairs", {37.9, 22.3}},   {"mirror", {22.9, 20.6}},
+    {"stairs", {40.4, 24.5}},   {"mirror", {22.6, 20.3}},
 };
 
 TEST(PprVsPlanar, EveryNamedCameraMatchesTheGroundTruth) {
@@ -74,11 +74,12 @@ TEST(PprVsPlanar, HoleFillingRaisesCoverage) {
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
 
-// Issue 19: the depth-aware hole rule (holes=1) against the slides' (holes=slides), flat mirrors
-// (normalmap=off: planar is exact only for them). Measured at 640x360 on lavapipe (docs/quality.md):
-// it gains 0.5 to 3.8 dB on every camera, and the error of the worst 1 % of pixels falls on every
-// camera. (It does not yet reach ssr-brute everywhere: docs/quality.md.)
-TEST(PprHoleRule, BeatsTheSlidesRuleOnEveryCamera) {
+// Issue 19: PPR's defaults (the depth-aware hole rule holes=1, and facing=1) against the slides'
+// reflection pass (holes=slides facing=0), flat mirrors (normalmap=off: planar is exact only for
+// them). Measured at 640x360 on lavapipe (docs/quality.md): 0.9 to 3.9 dB better on every camera,
+// and the error of the worst 1 % of pixels falls on every camera. (It does not reach ssr-brute on
+// every camera: docs/quality.md.)
+TEST(PprQuality, BeatsTheSlidesReflectionPassOnEveryCamera) {
     GpuFixture f;
     f.headless->settings().set("normalmap", "off");
     for (const std::string camera : {"overview", "puddles", "grazing", "stairs", "mirror", "normalmap"}) {
@@ -89,20 +90,22 @@ TEST(PprHoleRule, BeatsTheSlidesRuleOnEveryCamera) {
         struct Score {
             double db, worst1;  // composited PSNR; squared error of the worst 1 % of scored pixels
         };
-        auto score = [&](const char* holes) {
+        auto score = [&](const char* holes, const char* facing) {
             f.headless->settings().set("holes", holes);
+            f.headless->settings().set("facing", facing);
             const Rendered r = render(f, "ppr", camera);
             const app::ErrorBreakdown b = app::breakdownErrors(r.final, ref.image, r.reflection, ref.reflection, ref.reflectedPath);
             return Score{app::compositedPsnrDb(r.final, ref.image, ref.reflection), b.worst1PercentShare * b.squaredError};
         };
-        const Score slides = score("slides"), rule = score("1");
-        std::printf("%-9s psnr_db slides %.2f -> holes=1 %.2f; worst 1%% squared error %.3f -> %.3f\n", camera.c_str(), slides.db, rule.db,
+        const Score slides = score("slides", "0"), rule = score("1", "1");
+        std::printf("%-9s psnr_db slides %.2f -> defaults %.2f; worst 1%% squared error %.3f -> %.3f\n", camera.c_str(), slides.db, rule.db,
                     slides.worst1, rule.worst1);
-        EXPECT_GE(rule.db, slides.db + 0.25) << camera;
+        EXPECT_GE(rule.db, slides.db + 0.5) << camera;
         EXPECT_LT(rule.worst1, slides.worst1) << camera;
         EXPECT_FALSE(ref.reflectedPath.empty()) << "planar publishes its reflected paths";
     }
     f.headless->settings().set("holes", "1");
+    f.headless->settings().set("facing", "1");
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
 
