@@ -134,6 +134,8 @@ struct Image {
     VkExtent2D extent{};
     uint32_t mipLevels = 1;
 };
+// A 2D image's create info: optimal tiling, one sample, undefined initial layout.
+VkImageCreateInfo imageCreateInfo2D(VkExtent2D extent, VkFormat format, VkImageUsageFlags usage, uint32_t mipLevels, uint32_t layers);
 Image createImage(const Context& ctx, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage,
                   uint32_t mipLevels, const std::string& name);
 void destroyImage(const Context& ctx, Image& image);

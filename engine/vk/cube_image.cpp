@@ -3,17 +3,8 @@
 namespace ppr::vk {
 
 CubeImage createCubeImage(const Context& ctx, uint32_t size, VkFormat format, VkImageUsageFlags usage, const std::string& name) {
-    VkImageCreateInfo ici{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    VkImageCreateInfo ici = imageCreateInfo2D({size, size}, format, usage, 1, 6);
     ici.flags = VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT;
-    ici.imageType = VK_IMAGE_TYPE_2D;
-    ici.format = format;
-    ici.extent = {size, size, 1};
-    ici.mipLevels = 1;
-    ici.arrayLayers = 6;
-    ici.samples = VK_SAMPLE_COUNT_1_BIT;
-    ici.tiling = VK_IMAGE_TILING_OPTIMAL;
-    ici.usage = usage;
-    ici.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
     VmaAllocationCreateInfo aci{};
     aci.usage = VMA_MEMORY_USAGE_AUTO;
     CubeImage c;

@@ -71,18 +71,23 @@ VkImageAspectFlags aspectFor(VkFormat format) {
     }
 }
 
-Image createImage(const Context& ctx, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage, uint32_t mipLevels,
-                  const std::string& name) {
+VkImageCreateInfo imageCreateInfo2D(VkExtent2D extent, VkFormat format, VkImageUsageFlags usage, uint32_t mipLevels, uint32_t layers) {
     VkImageCreateInfo ici{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
     ici.imageType = VK_IMAGE_TYPE_2D;
     ici.format = format;
     ici.extent = {extent.width, extent.height, 1};
     ici.mipLevels = mipLevels;
-    ici.arrayLayers = 1;
+    ici.arrayLayers = layers;
     ici.samples = VK_SAMPLE_COUNT_1_BIT;
     ici.tiling = VK_IMAGE_TILING_OPTIMAL;
     ici.usage = usage;
     ici.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+    return ici;
+}
+
+Image createImage(const Context& ctx, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage, uint32_t mipLevels,
+                  const std::string& name) {
+    const VkImageCreateInfo ici = imageCreateInfo2D(extent, format, usage, mipLevels, 1);
     VmaAllocationCreateInfo aci{};
     aci.usage = VMA_MEMORY_USAGE_AUTO;
     aci.flags = VMA_ALLOCATION_CREATE_WITHIN_BUDGET_BIT;
