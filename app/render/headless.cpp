@@ -13,6 +13,15 @@ namespace ppr::app {
 
 namespace {
 constexpr size_t kMaxTimedFrames = 256;  // frames a capture keeps timings of (the median's window)
+
+// A host-readable buffer of `bytes` and its import into the graph, which leaves it readable by the host.
+void createReadback(const vk::Context& ctx, VkDeviceSize bytes, const char* name, vk::Buffer& buffer, graph::ExternalBuffer& import) {
+    buffer = vk::createBuffer(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, name);
+    import = {};
+    import.buffer = buffer.buffer;
+    import.desc = {bytes};
+    import.finalAccess = graph::Access::HostRead;
+}
 }  // namespace
 
 double median(std::vector<double> v) {
@@ -76,21 +85,9 @@ void HeadlessRenderer::ensureTargets(VkExtent2D extent) {
     targetImport_.image = target_.image;
     targetImport_.view = target_.view;
     targetImport_.desc = {extent.width, extent.height, Renderer::kCaptureFormat, 1};
-    readback_ = vk::createBuffer(ctx_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "capture readback");
-    readbackImport_ = {};
-    readbackImport_.buffer = readback_.buffer;
-    readbackImport_.desc = {bytes};
-    readbackImport_.finalAccess = graph::Access::HostRead;
-    reflectionReadback_ = vk::createBuffer(ctx_, bytes * 2, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "reflection readback");
-    reflectionImport_ = {};
-    reflectionImport_.buffer = reflectionReadback_.buffer;
-    reflectionImport_.desc = {bytes * 2};
-    reflectionImport_.finalAccess = graph::Access::HostRead;
-    pathReadback_ = vk::createBuffer(ctx_, bytes * 2, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "path readback");
-    pathImport_ = {};
-    pathImport_.buffer = pathReadback_.buffer;
-    pathImport_.desc = {bytes * 2};
-    pathImport_.finalAccess = graph::Access::HostRead;
+    createReadback(ctx_, bytes, "capture readback", readback_, readbackImport_);
+    createReadback(ctx_, bytes * 2, "reflection readback", reflectionReadback_, reflectionImport_);  // RGBA16F
+    createReadback(ctx_, bytes * 2, "path readback", pathReadback_, pathImport_);                    // RG32F
 }
 
 void HeadlessRenderer::ensureGlassReadback(uint32_t atlasSize) {
@@ -98,11 +95,7 @@ void HeadlessRenderer::ensureGlassReadback(uint32_t atlasSize) {
     vkDeviceWaitIdle(ctx_.device());
     vk::destroyBuffer(ctx_, glassReadback_);
     const VkDeviceSize bytes = VkDeviceSize(atlasSize) * atlasSize * 8;
-    glassReadback_ = vk::createBuffer(ctx_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback, "glass readback");
-    glassImport_ = {};
-    glassImport_.buffer = glassReadback_.buffer;
-    glassImport_.desc = {bytes};
-    glassImport_.finalAccess = graph::Access::HostRead;
+    createReadback(ctx_, bytes, "glass readback", glassReadback_, glassImport_);
     glassReadbackSize_ = atlasSize;
 }
 
