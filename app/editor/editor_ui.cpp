@@ -18,6 +18,7 @@ constexpr float kRingScale = 1.15f;    // ring radius / the larger half extent
 constexpr int kRingSegments = 48;
 constexpr ImU32 kOutline = IM_COL32(255, 200, 40, 255);
 constexpr ImU32 kHandle = IM_COL32(255, 255, 255, 255);
+constexpr ImU32 kActiveHandle = IM_COL32(255, 110, 0, 255);  // the handle being dragged (the UI test looks for it)
 
 bool toScreen(const EditorView& v, const glm::vec3& p, ImVec2& out) {
     const glm::vec4 clip = v.viewProj * glm::vec4(p, 1.0f);
@@ -201,8 +202,9 @@ bool ReflectorEditorUi::drawHandles(const EditorView& view, bool mouseFree) {
         for (int i = 0; i < 5; ++i) {
             on[i] = toScreen(view, points[i], screen[i]);
             if (!on[i]) continue;
-            if (i == 0) draw->AddCircleFilled(screen[i], kHandleRadius, kHandle);
-            else draw->AddRectFilled(ImVec2(screen[i].x - 5, screen[i].y - 5), ImVec2(screen[i].x + 5, screen[i].y + 5), kHandle);
+            const ImU32 colour = i == activeHandle_ ? kActiveHandle : kHandle;
+            if (i == 0) draw->AddCircleFilled(screen[i], kHandleRadius, colour);
+            else draw->AddRectFilled(ImVec2(screen[i].x - 5, screen[i].y - 5), ImVec2(screen[i].x + 5, screen[i].y + 5), colour);
         }
         const float ringRadius = kRingScale * std::max(r.halfExtents.x, r.halfExtents.y);
         ImVec2 ring[kRingSegments];

@@ -38,10 +38,16 @@ wait_for() {  # wait_for DESCRIPTION COMMAND...: polls until COMMAND succeeds
     done
     fail "timed out waiting for $what"
 }
+shot() { xwd -root -silent | convert xwd:- -crop "${WW}x${WH}+${WX}+${WY}" +repage "png:$WORK/view.png"; }
 selected() {  # the selection outline (yellow) is on screen
-    xwd -root -silent | convert xwd:- -crop "${WW}x${WH}+${WX}+${WY}" +repage "png:$WORK/view.png" || return 1
+    shot || return 1
     [ "$(convert "$WORK/view.png" -fill black +opaque 'rgb(255,200,40)' -fill white -opaque 'rgb(255,200,40)' -format '%[fx:mean*w*h]' info:)" != 0 ]
 }
+handle_at() {  # handle_at X Y COLOUR: a handle of COLOUR lies within 6 px of window pixel (X, Y)
+    shot || return 1
+    [ "$(convert "$WORK/view.png" -crop "13x13+$(($1 - 6))+$(($2 - 6))" +repage -fill black +opaque "$3" -fill white -opaque "$3" -format '%[fx:mean*w*h]' info:)" != 0 ]
+}
+WHITE='rgb(255,255,255)' ORANGE='rgb(255,110,0)'  # a handle, the handle being dragged (editor_ui.cpp)
 saved_with() { [ "$(centre "$FILE")" != none ] && [ "$(centre "$FILE")" != "$1" ]; }
 
 start_viewer
@@ -49,12 +55,13 @@ start_viewer
 PX=$((WX + 440)) PY=$((WY + 212))
 xdotool mousemove --sync "$PX" "$PY"
 sleep 1
+# Every step waits for what the viewer shows, not for a time: on a loaded machine one frame can take
+# seconds, and ImGui 1.86 sees only the input state at each frame's start.
 xdotool keydown ctrl
 sleep 0.5
 xdotool click 1
-sleep 0.5
-xdotool keyup ctrl
 wait_for "the snapped reflector in the view" selected
+xdotool keyup ctrl
 xdotool key ctrl+s
 wait_for "the snapped reflector in the saved file" saved_with none
 snapped=$(centre "$FILE")
@@ -62,12 +69,14 @@ snapped=$(centre "$FILE")
 note "snapped puddle_1 at $snapped"
 
 # Drag its centre handle (at the click point) 24 px right and 6 px down: it moves along the floor.
+HX=$((PX - WX)) HY=$((PY - WY))  # the handle in window pixels
+wait_for "the centre handle under the cursor" handle_at "$HX" "$HY" "$WHITE"
 xdotool mousemove --sync "$PX" "$PY" mousedown 1
-sleep 2  # the press lands on the handle before the mouse moves (frames are slow on a loaded CPU)
-for step in 1 2 3 4 5 6; do xdotool mousemove --sync $((PX + 4 * step)) $((PY + step)); sleep 0.5; done
-sleep 2
+wait_for "the centre handle grabbed" handle_at "$HX" "$HY" "$ORANGE"
+for step in 1 2 3 4 5 6; do xdotool mousemove --sync $((PX + 4 * step)) $((PY + step)); sleep 0.2; done
+wait_for "the grabbed handle at the drag's end" handle_at $((HX + 24)) $((HY + 6)) "$ORANGE"
 xdotool mouseup 1
-sleep 2
+wait_for "the handle released" handle_at $((HX + 24)) $((HY + 6)) "$WHITE"
 xdotool key ctrl+s
 wait_for "the moved reflector in the saved file" saved_with "$snapped"
 moved=$(centre "$FILE")
