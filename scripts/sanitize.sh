@@ -2,8 +2,9 @@
 # The sanitizer build (docs/reliability.md): the `asan` preset builds everything with AddressSanitizer,
 # LeakSanitizer and UndefinedBehaviorSanitizer (build/asan), then runs the tests under them.
 #   scripts/sanitize.sh [unit|gpu|all]     (default unit: what CI runs; gpu adds the GPU tests)
-# Leaks are suppressed only inside the Vulkan driver, loader, layers and X11 (tests/sanitize/lsan.supp,
-# each justified there). Exit non-zero on any report or failing test.
+# Its executables keep dlopen()ed libraries loaded to the end, so a leak's stack names its library; leaks
+# are suppressed only inside the Khronos validation layer (tests/sanitize/lsan.supp, justified there).
+# Exit non-zero on any report or failing test.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 what="${1:-unit}"
