@@ -13,9 +13,25 @@ namespace ppr::app {
 MemorySample sampleMemory(const vk::Context& ctx, uint64_t frame) {
     MemorySample s;
     s.frame = frame;
+    // Free pages glibc keeps in its arenas (lavapipe's device memory is host memory: every transient
+    // resized or re-created leaves some) go back to the system first, so resident memory counts what
+    // is in use rather than the allocator's history.
+    malloc_trim(0);
     if (FILE* f = std::fopen("/proc/self/statm", "r")) {
         unsigned long long size = 0, resident = 0;
         if (std::fscanf(f, "%llu %llu", &size, &resident) == 2) s.residentKib = resident * uint64_t(sysconf(_SC_PAGESIZE)) / 1024;
+        std::fclose(f);
+    }
+    // Resident memory by kind: anonymous (heaps, driver allocations), file-backed (code, JIT caches on
+    // disk) and shared memory (the X server's presentation buffers), to tell a leak from a mapping.
+    if (FILE* f = std::fopen("/proc/self/status", "r")) {
+        char line[128];
+        unsigned long long kib = 0;
+        while (std::fgets(line, sizeof line, f)) {
+            if (std::sscanf(line, "RssAnon: %llu", &kib) == 1) s.residentAnonKib = kib;
+            else if (std::sscanf(line, "RssFile: %llu", &kib) == 1) s.residentFileKib = kib;
+            else if (std::sscanf(line, "RssShmem: %llu", &kib) == 1) s.residentShmemKib = kib;
+        }
         std::fclose(f);
     }
     s.heapKib = mallinfo2().uordblks / 1024;
@@ -32,11 +48,12 @@ MemorySample sampleMemory(const vk::Context& ctx, uint64_t frame) {
 }
 
 std::string formatMemorySample(const MemorySample& s) {
-    char line[256];
+    char line[320];
     std::snprintf(line, sizeof line,
-                  "ppr: memory frame=%llu rss_kib=%llu heap_kib=%llu vma_allocations=%llu vma_bytes=%llu vma_block_bytes=%llu pipelines=%lld "
+                  "ppr: memory frame=%llu rss_kib=%llu rss_anon_kib=%llu rss_file_kib=%llu rss_shmem_kib=%llu heap_kib=%llu vma_allocations=%llu vma_bytes=%llu vma_block_bytes=%llu pipelines=%lld "
                   "descriptor_set_layouts=%lld descriptor_pools=%lld",
-                  (unsigned long long)s.frame, (unsigned long long)s.residentKib, (unsigned long long)s.heapKib,
+                  (unsigned long long)s.frame, (unsigned long long)s.residentKib, (unsigned long long)s.residentAnonKib,
+                  (unsigned long long)s.residentFileKib, (unsigned long long)s.residentShmemKib, (unsigned long long)s.heapKib,
                   (unsigned long long)s.vmaAllocations,
                   (unsigned long long)s.vmaBytes, (unsigned long long)s.vmaBlockBytes, (long long)s.pipelines,
                   (long long)s.descriptorSetLayouts, (long long)s.descriptorPools);

@@ -11,7 +11,8 @@ namespace ppr::app {
 
 struct MemorySample {
     uint64_t frame = 0;
-    uint64_t residentKib = 0;       // /proc/self/statm
+    uint64_t residentKib = 0;       // /proc/self/statm, after malloc_trim(0)
+    uint64_t residentAnonKib = 0, residentFileKib = 0, residentShmemKib = 0;  // its parts (/proc/self/status)
     uint64_t heapKib = 0;           // malloc's bytes in use (mallinfo2): growth here is held memory, not fragmentation
     uint64_t vmaAllocations = 0;    // live VMA allocations
     uint64_t vmaBytes = 0;          // bytes they hold
