@@ -275,6 +275,14 @@ std::unique_ptr<Context> Context::create(const ContextOptions& options) {
         need(s2.features.shaderStorageImageWriteWithoutFormat, "shaderStorageImageWriteWithoutFormat");
         need(s2.features.shaderStorageImageReadWithoutFormat, "shaderStorageImageReadWithoutFormat");
         need(s2.features.dualSrcBlend, "dualSrcBlend");
+        // Tile classification reduces with subgroup operations (one shared atomic per subgroup).
+        VkPhysicalDeviceVulkan11Properties p11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_PROPERTIES};
+        VkPhysicalDeviceProperties2 p2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+        p2.pNext = &p11;
+        vkGetPhysicalDeviceProperties2(ctx->physical_, &p2);
+        const VkSubgroupFeatureFlags subgroupOps = VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT;
+        need((p11.subgroupSupportedStages & VK_SHADER_STAGE_COMPUTE_BIT) && (p11.subgroupSupportedOperations & subgroupOps) == subgroupOps,
+             "subgroup basic+arithmetic operations in compute shaders");
         if (!missing.empty()) throw std::runtime_error("vulkan: " + ctx->info_.name + " lacks required features:" + missing);
         f2.features.samplerAnisotropy = s2.features.samplerAnisotropy;
         f2.features.depthClamp = s2.features.depthClamp;

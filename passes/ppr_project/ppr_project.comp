@@ -10,10 +10,11 @@
 
 // PPR step 2, the projection pass: every pixel finds the reflectors that reflect it and scatters its
 // screen-space offset to where it appears in them, keeping the closest with imageAtomicMin.
-// One workgroup per screen tile. With culling on, the workgroup first reduces the tile's world-space
-// bounds, tests every reflector against them in parallel (ppr_common/tile_culling.h) and keeps, in
-// shared memory and in projection order, the survivors and the possible occluders; each pixel then
-// runs the per-reflector logic over those lists only. With culling off the lists are all reflectors.
+// One workgroup per screen tile. With culling on, the workgroup tests every reflector against the
+// tile's world-space bounds (reduced once by tile classification) in parallel
+// (ppr_common/tile_culling.h) and keeps, in shared memory and in projection order, the survivors and
+// the possible occluders; each pixel then runs the per-reflector logic over those lists only. With
+// culling off the lists are all reflectors.
 layout(local_size_x = kPprTileSize, local_size_y = kPprTileSize) in;
 layout(set = 0, binding = 1) uniform sampler2D depthTex;
 layout(set = 0, binding = 2, scalar) readonly buffer Reflectors { ReflectorData reflectors[]; };
@@ -27,26 +28,18 @@ layout(set = 0, binding = 8, scalar) readonly buffer PlaneLeaders { uint planeLe
 layout(set = 0, binding = 9, r32ui) uniform uimage2D glassAtlas;
 layout(set = 0, binding = 10, scalar) readonly buffer GlassRegions { GlassRegionData glassRegions[]; };  // per reflector
 layout(set = 0, binding = 11) uniform sampler2D normalTex;  // G-buffer normal (pc.facingOnly)
+layout(set = 0, binding = 12, scalar) readonly buffer TileBounds { PprTileBounds tileBounds[]; };
 layout(push_constant, scalar) uniform Push { PprProjectPush pc; };
 
 const uint kThreads = kPprTileSize * kPprTileSize;
 
-// Tile bounds as order-preserving uints so that atomicMin/Max reduce floats.
-shared uint boxLo[3], boxHi[3];
 shared uvec2 planeRect[kPprMaxCullPlanes];          // per cull plane: the tile's mirrored screen rectangle
 shared vec3 hitLo[kPprMaxCullPlanes], hitHi[kPprMaxCullPlanes];  // and its hit region
 shared uint survivorWords[kPprMaxReflectors / 2u];  // 16-bit reflector indices, in projection order
 shared uint occluderWords[kPprMaxReflectors / 2u];  // 16-bit reflector indices, in any order
 shared uint chunkMask[kThreads / 32u];
 shared uint survivorCount, occluderCount;
-shared uint tileHasContent;
 shared uint reachLoX, reachLoY, reachHiX, reachHiY;  // pixels the survivors can write to
-
-uint orderedFromFloat(float f) {
-    uint u = floatBitsToUint(f);
-    return (u & 0x80000000u) != 0u ? ~u : u | 0x80000000u;
-}
-float floatFromOrdered(uint u) { return uintBitsToFloat((u & 0x80000000u) != 0u ? u & 0x7FFFFFFFu : ~u); }
 
 uint unpack16(uint word, uint slot) { return (word >> (16u * (slot & 1u))) & 0xFFFFu; }
 uint survivorAt(uint k) { return pc.cullTiles == 0u ? projectionOrder[k] : unpack16(survivorWords[k >> 1u], k); }
@@ -167,14 +160,11 @@ void cullReflectors(vec3 lo, vec3 hi) {
 
 void main() {
     uint lid = gl_LocalInvocationIndex;
+    PprTileBounds tile = tileBounds[gl_WorkGroupID.y * pc.tilesX + gl_WorkGroupID.x];
+    bool hasContent = tile.hasContent != 0u;  // the same in every thread
     if (lid == 0u) {
-        for (int a = 0; a < 3; ++a) {
-            boxLo[a] = 0xFFFFFFFFu;
-            boxHi[a] = 0u;
-        }
         survivorCount = 0u;
         occluderCount = 0u;
-        tileHasContent = 0u;
         reachLoX = reachLoY = 0xFFFFu;
         reachHiX = reachHiY = 0u;
     }
@@ -183,26 +173,14 @@ void main() {
     barrier();
 
     ivec2 pix = ivec2(gl_GlobalInvocationID.xy);
-    bool valid = all(lessThan(pix, ivec2(frame.screenSize)));
+    bool valid = hasContent && all(lessThan(pix, ivec2(frame.screenSize)));
     float depth = valid ? texelFetch(depthTex, pix, 0).r : 0.0;
     valid = valid && depth > 0.0;  // sky: no position to mirror
     vec3 p = valid ? worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depth) : vec3(0.0);
-    if (valid) atomicOr(tileHasContent, 1u);
-    if (valid && pc.cullTiles != 0u) {
-        for (int a = 0; a < 3; ++a) {
-            atomicMin(boxLo[a], orderedFromFloat(p[a]));
-            atomicMax(boxHi[a], orderedFromFloat(p[a]));
-        }
-    }
-    barrier();
 
-    bool hasContent = tileHasContent != 0u;  // the same in every thread
     uint candidates = hasContent ? pc.reflectorCount : 0u, occluders = candidates;
     if (pc.cullTiles != 0u) {
-        if (hasContent) {
-            cullReflectors(vec3(floatFromOrdered(boxLo[0]), floatFromOrdered(boxLo[1]), floatFromOrdered(boxLo[2])),
-                           vec3(floatFromOrdered(boxHi[0]), floatFromOrdered(boxHi[1]), floatFromOrdered(boxHi[2])));
-        }
+        if (hasContent) cullReflectors(tile.lo, tile.hi);
         candidates = survivorCount;
         occluders = occluderCount;
     }
