@@ -15,7 +15,9 @@
 // (ppr_common/tile_culling.h) and keeps, in shared memory and in projection order, the survivors and
 // the possible occluders; each pixel then runs the per-reflector logic over those lists only. With
 // culling off the lists are all reflectors.
-layout(local_size_x = kPprTileSize, local_size_y = kPprTileSize) in;
+// kPprProjectThreads invocations per tile, each projecting every kPprProjectThreads-th pixel: on
+// lavapipe a barrier costs in proportion to the invocations it stops, and culling has several.
+layout(local_size_x = kPprProjectThreads) in;
 layout(set = 0, binding = 1) uniform sampler2D depthTex;
 layout(set = 0, binding = 2, scalar) readonly buffer Reflectors { ReflectorData reflectors[]; };
 layout(set = 0, binding = 3, scalar) readonly buffer Order { uint projectionOrder[]; };
@@ -31,13 +33,14 @@ layout(set = 0, binding = 11) uniform sampler2D normalTex;  // G-buffer normal (
 layout(set = 0, binding = 12, scalar) readonly buffer TileBounds { PprTileBounds tileBounds[]; };
 layout(push_constant, scalar) uniform Push { PprProjectPush pc; };
 
-const uint kThreads = kPprTileSize * kPprTileSize;
+const uint kThreads = kPprProjectThreads;
+const uint kMaskWords = (kThreads + 31u) / 32u;  // survivor bit masks of one chunk
 
 shared uvec2 planeRect[kPprMaxCullPlanes];          // per cull plane: the tile's mirrored screen rectangle
 shared vec3 hitLo[kPprMaxCullPlanes], hitHi[kPprMaxCullPlanes];  // and its hit region
 shared uint survivorWords[kPprMaxReflectors / 2u];  // 16-bit reflector indices, in projection order
 shared uint occluderWords[kPprMaxReflectors / 2u];  // 16-bit reflector indices, in any order
-shared uint chunkMask[kThreads / 32u];
+shared uint chunkMask[kMaskWords];
 shared uint survivorCount, occluderCount;
 shared uint reachLoX, reachLoY, reachHiX, reachHiY;  // pixels the survivors can write to
 
@@ -109,7 +112,7 @@ void cullReflectors(vec3 lo, vec3 hi) {
     // Survivors in projection order: a chunk's verdicts go into a bit mask, and each survivor's rank
     // is the number of survivors before it, so the list never depends on thread timing.
     for (uint base = 0u; base < pc.reflectorCount; base += kThreads) {
-        if (lid < kThreads / 32u) chunkMask[lid] = 0u;
+        if (lid < kMaskWords) chunkMask[lid] = 0u;
         barrier();
         uint k = base + lid;
         bool survives = false;
@@ -135,7 +138,7 @@ void cullReflectors(vec3 lo, vec3 hi) {
         barrier();
         uint rank = survivorCount + bitCount(chunkMask[lid >> 5u] & ((1u << (lid & 31u)) - 1u));
         uint total = 0u;
-        for (uint w = 0u; w < kThreads / 32u; ++w) {
+        for (uint w = 0u; w < kMaskWords; ++w) {
             uint n = bitCount(chunkMask[w]);
             if (w < (lid >> 5u)) rank += n;
             total += n;
@@ -158,40 +161,12 @@ void cullReflectors(vec3 lo, vec3 hi) {
     barrier();
 }
 
-void main() {
-    uint lid = gl_LocalInvocationIndex;
-    PprTileBounds tile = tileBounds[gl_WorkGroupID.y * pc.tilesX + gl_WorkGroupID.x];
-    bool hasContent = tile.hasContent != 0u;  // the same in every thread
-    if (lid == 0u) {
-        survivorCount = 0u;
-        occluderCount = 0u;
-        reachLoX = reachLoY = 0xFFFFu;
-        reachHiX = reachHiY = 0u;
-    }
-    if (pc.cullTiles != 0u)
-        for (uint w = lid; w < kPprMaxReflectors / 2u; w += kThreads) survivorWords[w] = occluderWords[w] = 0u;
-    barrier();
-
-    ivec2 pix = ivec2(gl_GlobalInvocationID.xy);
-    bool valid = hasContent && all(lessThan(pix, ivec2(frame.screenSize)));
-    float depth = valid ? texelFetch(depthTex, pix, 0).r : 0.0;
-    valid = valid && depth > 0.0;  // sky: no position to mirror
-    vec3 p = valid ? worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depth) : vec3(0.0);
-
-    uint candidates = hasContent ? pc.reflectorCount : 0u, occluders = candidates;
-    if (pc.cullTiles != 0u) {
-        if (hasContent) cullReflectors(tile.lo, tile.hi);
-        candidates = survivorCount;
-        occluders = occluderCount;
-    }
-    if (lid == 0u) {
-        tileSurvivors[gl_WorkGroupID.y * pc.tilesX + gl_WorkGroupID.x] = candidates;
-        if (hasContent) atomicAdd(stats.tilesWithContent, 1u);
-        atomicAdd(stats.reflectorTilePairs, candidates);
-        atomicAdd(stats.occluderTilePairs, occluders);
-        atomicMax(stats.maxTileSurvivors, candidates);
-    }
-    if (!valid) return;
+// Projects one pixel of the tile into every reflector among the candidates that reflects it.
+void projectPixel(ivec2 pix, uint candidates, uint occluders) {
+    if (any(greaterThanEqual(pix, ivec2(frame.screenSize)))) return;
+    float depth = texelFetch(depthTex, pix, 0).r;
+    if (depth <= 0.0) return;  // sky: no position to mirror
+    vec3 p = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depth);
 
     vec3 eye = frame.cameraPos.xyz;
     vec3 surfaceNormal = pc.facingOnly != 0u ? texelFetch(normalTex, pix, 0).xyz : vec3(0.0);
@@ -236,4 +211,38 @@ void main() {
         bestMirrored = mirrored;
         bestHit = hit;
     }
+}
+
+void main() {
+    uint lid = gl_LocalInvocationIndex;
+    PprTileBounds tile = tileBounds[gl_WorkGroupID.y * pc.tilesX + gl_WorkGroupID.x];
+    bool hasContent = tile.hasContent != 0u;  // the same in every thread
+    if (lid == 0u) {
+        survivorCount = 0u;
+        occluderCount = 0u;
+        reachLoX = reachLoY = 0xFFFFu;
+        reachHiX = reachHiY = 0u;
+    }
+    if (pc.cullTiles != 0u)
+        for (uint w = lid; w < kPprMaxReflectors / 2u; w += kThreads) survivorWords[w] = occluderWords[w] = 0u;
+    barrier();
+
+    uint candidates = hasContent ? pc.reflectorCount : 0u, occluders = candidates;
+    if (pc.cullTiles != 0u) {
+        if (hasContent) cullReflectors(tile.lo, tile.hi);
+        candidates = survivorCount;
+        occluders = occluderCount;
+    }
+    if (lid == 0u) {
+        tileSurvivors[gl_WorkGroupID.y * pc.tilesX + gl_WorkGroupID.x] = candidates;
+        if (hasContent) atomicAdd(stats.tilesWithContent, 1u);
+        atomicAdd(stats.reflectorTilePairs, candidates);
+        atomicAdd(stats.occluderTilePairs, occluders);
+        atomicMax(stats.maxTileSurvivors, candidates);
+    }
+    if (!hasContent) return;
+
+    ivec2 origin = ivec2(gl_WorkGroupID.xy) * int(kPprTileSize);
+    for (uint i = lid; i < kPprTileSize * kPprTileSize; i += kThreads)
+        projectPixel(origin + ivec2(i % kPprTileSize, i / kPprTileSize), candidates, occluders);
 }
