@@ -43,8 +43,8 @@ passes::Environment TechniqueFrame::environment() {
     return env;
 }
 
-passes::TileLists TechniqueFrame::classifyTiles(uint32_t maxReflectorId, bool worldBounds) {
-    return services.tileClassify.add(graph, in, gbuffer, services.stats.import(graph, slot), maxReflectorId, worldBounds);
+passes::TileLists TechniqueFrame::classifyTiles(uint32_t maxReflectorId) {
+    return services.tileClassify.add(graph, in, gbuffer, services.stats.import(graph, slot), maxReflectorId);
 }
 
 }  // namespace ppr::app

@@ -74,8 +74,7 @@ struct TechniqueFrame {
     // The depth hierarchy of this frame's depth (built once, published as DepthHierarchy).
     passes::HizAtlas depthHierarchy();
     // Tile lists of this frame; reflector ids above maxReflectorId do not make a tile planar.
-    // worldBounds: also each tile's world-space bounds (PPR's projection reads them).
-    passes::TileLists classifyTiles(uint32_t maxReflectorId, bool worldBounds = false);
+    passes::TileLists classifyTiles(uint32_t maxReflectorId);
     // What this frame's misses fall back to (--set fallback_env, env_source), bound once a frame
     // (published as EnvironmentBound); renders the reflection probe the first time it is asked for.
     passes::Environment environment();

@@ -54,13 +54,12 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
     const uint32_t projected = buffer.projected();
     const passes::ReflectorBinding binding{buffer.reflectors(f.slot), buffer.order(f.slot), buffer.planeLeaders(f.slot), projected,
                                            buffer.cullPlaneCount()};
-    const passes::TileLists tiles = f.classifyTiles(projected, /*worldBounds=*/true);
+    const passes::TileLists tiles = f.classifyTiles(projected);
     passes::PprProjectInputs project;
     project.depth = f.gbuffer.depth;
     project.intermediate = passes::addPprClearPass(f.graph, "ppr.intermediate", f.in.extent);
     project.bounds = bounds_.add(f.graph, f.in, binding.reflectors, projected);
     project.stats = tiles.stats;
-    project.tileBounds = tiles.bounds;
     project.tilesX = tiles.tilesX;
     project.tilesY = tiles.tilesY;
     project.cullTiles = s.tiles;

@@ -275,7 +275,7 @@ std::unique_ptr<Context> Context::create(const ContextOptions& options) {
         need(s2.features.shaderStorageImageWriteWithoutFormat, "shaderStorageImageWriteWithoutFormat");
         need(s2.features.shaderStorageImageReadWithoutFormat, "shaderStorageImageReadWithoutFormat");
         need(s2.features.dualSrcBlend, "dualSrcBlend");
-        // Tile classification reduces with subgroup operations (one shared atomic per subgroup).
+        // Tile classification and the projection reduce with subgroup operations (one shared atomic per subgroup).
         VkPhysicalDeviceVulkan11Properties p11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_PROPERTIES};
         VkPhysicalDeviceProperties2 p2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
         p2.pNext = &p11;

@@ -43,18 +43,6 @@ PPR_SIZE_CHECK(PprFrameStats, 48);
 // kTileClassCount must match PprFrameStats::dispatch.
 
 PPR_BEGIN
-// A tile's world-space box over its pixels with geometry, reduced once by tile classification
-// (tiles.bounds) and read by the projection pass's culling instead of reducing it again there.
-struct PprTileBounds {
-    vec3 lo;
-    uint hasContent;  // 0: no pixel with geometry (sky only): nothing to project, lo and hi are 0
-    vec3 hi;
-    uint pad0;
-};
-PPR_END
-PPR_SIZE_CHECK(PprTileBounds, 32);
-
-PPR_BEGIN
 // Tiles needed to cover `pixels` (partial tiles at the edges count).
 PPR_INLINE uint pprTilesCovering(uint pixels) { return (pixels + kPprTileSize - 1u) / kPprTileSize; }
 

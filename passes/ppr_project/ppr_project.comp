@@ -1,5 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
 #include "common/bindings.glsl"
 #include "common/reflector_data.h"
 #include "ppr_common/encoding.h"
@@ -10,8 +12,9 @@
 
 // PPR step 2, the projection pass: every pixel finds the reflectors that reflect it and scatters its
 // screen-space offset to where it appears in them, keeping the closest with imageAtomicMin.
-// One workgroup per screen tile. With culling on, the workgroup tests every reflector against the
-// tile's world-space bounds (reduced once by tile classification) in parallel
+// One workgroup per screen tile. Each invocation reconstructs the world positions of its pixels once,
+// keeps them in registers and reduces their bounds (one shared atomic per subgroup and value). With
+// culling on, the workgroup then tests every reflector against the tile's bounds in parallel
 // (ppr_common/tile_culling.h) and keeps, in shared memory and in projection order, the survivors and
 // the possible occluders; each pixel then runs the per-reflector logic over those lists only. With
 // culling off the lists are all reflectors.
@@ -30,11 +33,14 @@ layout(set = 0, binding = 8, scalar) readonly buffer PlaneLeaders { uint planeLe
 layout(set = 0, binding = 9, r32ui) uniform uimage2D glassAtlas;
 layout(set = 0, binding = 10, scalar) readonly buffer GlassRegions { GlassRegionData glassRegions[]; };  // per reflector
 layout(set = 0, binding = 11) uniform sampler2D normalTex;  // G-buffer normal (pc.facingOnly)
-layout(set = 0, binding = 12, scalar) readonly buffer TileBounds { PprTileBounds tileBounds[]; };
 layout(push_constant, scalar) uniform Push { PprProjectPush pc; };
 
 const uint kThreads = kPprProjectThreads;
 const uint kMaskWords = (kThreads + 31u) / 32u;  // survivor bit masks of one chunk
+const uint kPixelsPerThread = kPprTileSize * kPprTileSize / kThreads;
+
+// Tile bounds as order-preserving uints so that integer min/max reduce floats exactly.
+shared uvec3 boxLo, boxHi;
 
 shared uvec2 planeRect[kPprMaxCullPlanes];          // per cull plane: the tile's mirrored screen rectangle
 shared vec3 hitLo[kPprMaxCullPlanes], hitHi[kPprMaxCullPlanes];  // and its hit region
@@ -43,6 +49,13 @@ shared uint occluderWords[kPprMaxReflectors / 2u];  // 16-bit reflector indices,
 shared uint chunkMask[kMaskWords];
 shared uint survivorCount, occluderCount;
 shared uint reachLoX, reachLoY, reachHiX, reachHiY;  // pixels the survivors can write to
+
+uint orderedFromFloat(float f) {
+    uint u = floatBitsToUint(f);
+    return (u & 0x80000000u) != 0u ? ~u : u | 0x80000000u;
+}
+float floatFromOrdered(uint u) { return uintBitsToFloat((u & 0x80000000u) != 0u ? u & 0x7FFFFFFFu : ~u); }
+vec3 floatFromOrdered(uvec3 u) { return vec3(floatFromOrdered(u.x), floatFromOrdered(u.y), floatFromOrdered(u.z)); }
 
 uint unpack16(uint word, uint slot) { return (word >> (16u * (slot & 1u))) & 0xFFFFu; }
 uint survivorAt(uint k) { return pc.cullTiles == 0u ? projectionOrder[k] : unpack16(survivorWords[k >> 1u], k); }
@@ -161,12 +174,15 @@ void cullReflectors(vec3 lo, vec3 hi) {
     barrier();
 }
 
-// Projects one pixel of the tile into every reflector among the candidates that reflects it.
-void projectPixel(ivec2 pix, uint candidates, uint occluders) {
-    if (any(greaterThanEqual(pix, ivec2(frame.screenSize)))) return;
-    float depth = texelFetch(depthTex, pix, 0).r;
-    if (depth <= 0.0) return;  // sky: no position to mirror
-    vec3 p = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depth);
+// This invocation's j-th pixel of the tile.
+ivec2 pixelOf(uint j) {
+    uint i = gl_LocalInvocationIndex + j * kThreads;
+    return ivec2(gl_WorkGroupID.xy) * int(kPprTileSize) + ivec2(i % kPprTileSize, i / kPprTileSize);
+}
+
+// Projects one pixel of the tile, at world position p, into every reflector among the candidates
+// that reflects it.
+void projectPixel(ivec2 pix, vec3 p, uint candidates, uint occluders) {
 
     vec3 eye = frame.cameraPos.xyz;
     vec3 surfaceNormal = pc.facingOnly != 0u ? texelFetch(normalTex, pix, 0).xyz : vec3(0.0);
@@ -215,9 +231,9 @@ void projectPixel(ivec2 pix, uint candidates, uint occluders) {
 
 void main() {
     uint lid = gl_LocalInvocationIndex;
-    PprTileBounds tile = tileBounds[gl_WorkGroupID.y * pc.tilesX + gl_WorkGroupID.x];
-    bool hasContent = tile.hasContent != 0u;  // the same in every thread
     if (lid == 0u) {
+        boxLo = uvec3(0xFFFFFFFFu);
+        boxHi = uvec3(0u);
         survivorCount = 0u;
         occluderCount = 0u;
         reachLoX = reachLoY = 0xFFFFu;
@@ -225,11 +241,38 @@ void main() {
     }
     if (pc.cullTiles != 0u)
         for (uint w = lid; w < kPprMaxReflectors / 2u; w += kThreads) survivorWords[w] = occluderWords[w] = 0u;
+
+    // Every pixel's world position, once, for the bounds and the projection.
+    vec4 points[kPixelsPerThread];  // xyz: world position; w: 1 with geometry, 0 for sky or off screen
+    uvec3 lo = uvec3(0xFFFFFFFFu), hi = uvec3(0u);
+    for (uint j = 0u; j < kPixelsPerThread; ++j) {
+        points[j] = vec4(0.0);
+        ivec2 pix = pixelOf(j);
+        if (any(greaterThanEqual(pix, ivec2(frame.screenSize)))) continue;
+        float depth = texelFetch(depthTex, pix, 0).r;
+        if (depth <= 0.0) continue;  // sky: no position to mirror
+        vec3 p = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depth);
+        points[j] = vec4(p, 1.0);
+        lo = min(lo, uvec3(orderedFromFloat(p.x), orderedFromFloat(p.y), orderedFromFloat(p.z)));
+        hi = max(hi, uvec3(orderedFromFloat(p.x), orderedFromFloat(p.y), orderedFromFloat(p.z)));
+    }
+    lo = subgroupMin(lo);
+    hi = subgroupMax(hi);
+    barrier();  // the shared state above is initialised
+    if (subgroupElect() && lo.x <= hi.x) {
+        atomicMin(boxLo.x, lo.x);
+        atomicMin(boxLo.y, lo.y);
+        atomicMin(boxLo.z, lo.z);
+        atomicMax(boxHi.x, hi.x);
+        atomicMax(boxHi.y, hi.y);
+        atomicMax(boxHi.z, hi.z);
+    }
     barrier();
 
+    bool hasContent = boxLo.x <= boxHi.x;  // the same in every thread
     uint candidates = hasContent ? pc.reflectorCount : 0u, occluders = candidates;
     if (pc.cullTiles != 0u) {
-        if (hasContent) cullReflectors(tile.lo, tile.hi);
+        if (hasContent) cullReflectors(floatFromOrdered(boxLo), floatFromOrdered(boxHi));
         candidates = survivorCount;
         occluders = occluderCount;
     }
@@ -240,9 +283,6 @@ void main() {
         atomicAdd(stats.occluderTilePairs, occluders);
         atomicMax(stats.maxTileSurvivors, candidates);
     }
-    if (!hasContent) return;
-
-    ivec2 origin = ivec2(gl_WorkGroupID.xy) * int(kPprTileSize);
-    for (uint i = lid; i < kPprTileSize * kPprTileSize; i += kThreads)
-        projectPixel(origin + ivec2(i % kPprTileSize, i / kPprTileSize), candidates, occluders);
+    for (uint j = 0u; j < kPixelsPerThread; ++j)
+        if (points[j].w != 0.0) projectPixel(pixelOf(j), points[j].xyz, candidates, occluders);
 }

@@ -40,7 +40,6 @@ PprProjectOutputs PprProjectPass::add(graph::RenderGraph& g, const FrameInputs& 
         .storageReadWrite(inputs.glassAtlas, &out.glassAtlas)
         .storageRead(inputs.glassRegions)
         .sampled(inputs.normal, in.samplers->nearestClamp)
-        .storageRead(inputs.tileBounds)
         .push(push)
         .dispatch(in.extent, gpu::kPprTileSize);
     return out;

@@ -26,7 +26,6 @@ struct PprProjectInputs {
     bool glass = true;                // --set glass
     graph::ImageHandle normal;        // G-buffer normal (read with facingOnly)
     bool facingOnly = true;           // --set facing
-    graph::BufferHandle tileBounds;   // PprTileBounds per tile (tiles.classify with worldBounds)
 };
 
 struct PprProjectOutputs {

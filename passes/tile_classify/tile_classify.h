@@ -12,7 +12,7 @@ struct TileClassifyPush {
     uint tilesX;
     uint tileCount;       // tiles on screen: class c's list starts at c * tileCount
     uint maxReflectorId;  // reflector ids above this (beyond PPR's budget) are not PPR's
-    uint worldBounds;     // 1: also write each tile's PprTileBounds (PPR's culling reads them)
+    uint pad0;
 };
 PPR_END
 PPR_SIZE_CHECK(TileClassifyPush, 16);

@@ -17,13 +17,12 @@ TileClassifyPass::TileClassifyPass(const vk::Context& ctx) : ctx_(ctx) {
 }
 
 TileLists TileClassifyPass::add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::BufferHandle stats,
-                                uint32_t maxReflectorId, bool worldBounds) const {
+                                uint32_t maxReflectorId) const {
     TileLists t;
     t.tilesX = gpu::pprTilesCovering(in.extent.width);
     t.tilesY = gpu::pprTilesCovering(in.extent.height);
     graph::BufferHandle args = g.createBuffer("tiles.args", {sizeof(gpu::TileDispatchArgs) * gpu::kTileClassCount});
     graph::BufferHandle lists = g.createBuffer("tiles.lists", {sizeof(uint32_t) * gpu::kTileClassCount * t.tileCount()});
-    graph::BufferHandle bounds = g.createBuffer("tiles.bounds", {sizeof(gpu::PprTileBounds) * t.tileCount()});
 
     // Empty lists (x = 0, y = z = 1) and zero counters; vkCmdUpdateBuffer/FillBuffer are transfer commands.
     struct Clear {
@@ -47,15 +46,12 @@ TileLists TileClassifyPass::add(graph::RenderGraph& g, const FrameInputs& in, co
     push.tilesX = t.tilesX;
     push.tileCount = t.tileCount();
     push.maxReflectorId = maxReflectorId;
-    push.worldBounds = worldBounds ? 1u : 0u;
     ComputePass(g, ctx_, "tiles.classify", pipeline_)
         .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
         .sampled(gb.reflector, in.samplers->nearestClamp)
         .sampled(gb.material, in.samplers->nearestClamp)
         .storageReadWrite(clearedArgs, &t.args)
         .storageWrite(lists, &t.lists)
-        .sampled(gb.depth, in.samplers->nearestClamp)
-        .storageWrite(bounds, &t.bounds)
         .push(push)
         .dispatch(in.extent, gpu::kPprTileSize);
 

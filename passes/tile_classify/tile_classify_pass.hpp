@@ -11,7 +11,6 @@ struct TileLists {
     graph::BufferHandle args;   // TileDispatchArgs[kTileClassCount] (ppr_common/tiles.h)
     graph::BufferHandle lists;  // uint[kTileClassCount * tileCount]: class c's list from c * tileCount
     graph::BufferHandle stats;  // PprFrameStats, new version
-    graph::BufferHandle bounds; // PprTileBounds per tile (ppr_common/tiles.h), written when asked for
     uint32_t tilesX = 0, tilesY = 0;
     uint32_t tileCount() const { return tilesX * tilesY; }
 };
@@ -21,10 +20,8 @@ public:
     explicit TileClassifyPass(const vk::Context& ctx);
     // Clears the arguments and `stats` ("tiles.clear", transfer), classifies ("tiles.classify") and
     // copies the arguments into `stats` ("tiles.count").
-    // Reflector ids above maxReflectorId do not make a tile planar (beyond PPR's budget). With
-    // worldBounds it also reduces each tile's world-space bounds from the depth buffer (PPR's culling).
-    TileLists add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::BufferHandle stats, uint32_t maxReflectorId,
-                  bool worldBounds) const;
+    // Reflector ids above maxReflectorId do not make a tile planar (beyond PPR's budget).
+    TileLists add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::BufferHandle stats, uint32_t maxReflectorId) const;
 
 private:
     const vk::Context& ctx_;
