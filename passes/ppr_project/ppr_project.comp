@@ -36,7 +36,6 @@ layout(set = 0, binding = 11) uniform sampler2D normalTex;  // G-buffer normal (
 layout(push_constant, scalar) uniform Push { PprProjectPush pc; };
 
 const uint kThreads = kPprProjectThreads;
-const uint kMaskWords = (kThreads + 31u) / 32u;  // survivor bit masks of one chunk
 const uint kPixelsPerThread = kPprTileSize * kPprTileSize / kThreads;
 
 // Tile bounds as order-preserving uints so that integer min/max reduce floats exactly.
@@ -46,7 +45,7 @@ shared uvec2 planeRect[kPprMaxCullPlanes];          // per cull plane: the tile'
 shared vec3 hitLo[kPprMaxCullPlanes], hitHi[kPprMaxCullPlanes];  // and its hit region
 shared uint survivorWords[kPprMaxReflectors / 2u];  // 16-bit reflector indices, in projection order
 shared uint occluderWords[kPprMaxReflectors / 2u];  // 16-bit reflector indices, in any order
-shared uint chunkMask[kMaskWords];
+shared uint runSurvivors[kThreads];  // survivors in each invocation's run of the projection order
 shared uint survivorCount, occluderCount;
 shared uint reachLoX, reachLoY, reachHiX, reachHiY;  // pixels the survivors can write to
 
@@ -122,44 +121,47 @@ void cullReflectors(vec3 lo, vec3 hi) {
         }
     }
     barrier();
-    // Survivors in projection order: a chunk's verdicts go into a bit mask, and each survivor's rank
-    // is the number of survivors before it, so the list never depends on thread timing.
-    for (uint base = 0u; base < pc.reflectorCount; base += kThreads) {
-        if (lid < kMaskWords) chunkMask[lid] = 0u;
-        barrier();
-        uint k = base + lid;
-        bool survives = false;
-        uint i = 0u;
-        if (k < pc.reflectorCount) {
-            i = projectionOrder[k];
-            PprReflectorBounds b = bounds[i];
-            ReflectorData r = reflectors[i];
-            // Reflectors beyond the per-plane tables are judged on their own rectangle alone.
-            bool tabled = r.cullPlane != kPprNoCullPlane;
-            uvec2 mirrored = tabled ? planeRect[r.cullPlane] : b.rect;
-            survives = b.reflects != 0u && pprRectsOverlap(mirrored, b.rect) &&
-                       (!tabled || pprRectangleMeetsBox(r, hitLo[r.cullPlane], hitHi[r.cullPlane]));
-            if (survives) {
-                // It can only write where both rectangles overlap.
-                atomicMin(reachLoX, max(mirrored.x & 0xFFFFu, b.rect.x & 0xFFFFu));
-                atomicMin(reachLoY, max(mirrored.x >> 16u, b.rect.x >> 16u));
-                atomicMax(reachHiX, min(mirrored.y & 0xFFFFu, b.rect.y & 0xFFFFu));
-                atomicMax(reachHiY, min(mirrored.y >> 16u, b.rect.y >> 16u));
-                atomicOr(chunkMask[lid >> 5u], 1u << (lid & 31u));
-            }
-        }
-        barrier();
-        uint rank = survivorCount + bitCount(chunkMask[lid >> 5u] & ((1u << (lid & 31u)) - 1u));
-        uint total = 0u;
-        for (uint w = 0u; w < kMaskWords; ++w) {
-            uint n = bitCount(chunkMask[w]);
-            if (w < (lid >> 5u)) rank += n;
-            total += n;
-        }
-        if (survives) atomicOr(survivorWords[rank >> 1u], i << (16u * (rank & 1u)));
-        barrier();
-        if (lid == 0u) survivorCount += total;
+    // Survivors in projection order, in one phase: each invocation judges a contiguous run of the
+    // order (at most 32 reflectors: kPprMaxReflectors / kThreads) into a bit mask, and its first
+    // survivor's rank is the number of survivors in the runs before it, so the list never depends
+    // on thread timing and the workgroup meets at one barrier whatever the reflector count.
+    uint perThread = (pc.reflectorCount + kThreads - 1u) / kThreads;
+    uint first = min(lid * perThread, pc.reflectorCount), last = min(first + perThread, pc.reflectorCount);
+    uint verdicts = 0u;
+    uvec4 reachMine = uvec4(0xFFFFu, 0xFFFFu, 0u, 0u);  // lo x, lo y, hi x, hi y
+    for (uint k = first; k < last; ++k) {
+        uint i = projectionOrder[k];
+        PprReflectorBounds b = bounds[i];
+        if (b.reflects == 0u) continue;
+        ReflectorData r = reflectors[i];
+        // Reflectors beyond the per-plane tables are judged on their own rectangle alone.
+        bool tabled = r.cullPlane != kPprNoCullPlane;
+        uvec2 mirrored = tabled ? planeRect[r.cullPlane] : b.rect;
+        if (!pprRectsOverlap(mirrored, b.rect)) continue;
+        if (tabled && !pprRectangleMeetsBox(r, hitLo[r.cullPlane], hitHi[r.cullPlane])) continue;
+        verdicts |= 1u << (k - first);
+        // It can only write where both rectangles overlap.
+        reachMine = uvec4(min(reachMine.xy, uvec2(max(mirrored.x & 0xFFFFu, b.rect.x & 0xFFFFu), max(mirrored.x >> 16u, b.rect.x >> 16u))),
+                          max(reachMine.zw, uvec2(min(mirrored.y & 0xFFFFu, b.rect.y & 0xFFFFu), min(mirrored.y >> 16u, b.rect.y >> 16u))));
     }
+    runSurvivors[lid] = bitCount(verdicts);
+    if (verdicts != 0u) {
+        atomicMin(reachLoX, reachMine.x);
+        atomicMin(reachLoY, reachMine.y);
+        atomicMax(reachHiX, reachMine.z);
+        atomicMax(reachHiY, reachMine.w);
+    }
+    barrier();
+    uint rank = 0u, total = 0u;
+    for (uint t = 0u; t < kThreads; ++t) {
+        if (t < lid) rank += runSurvivors[t];
+        total += runSurvivors[t];
+    }
+    for (uint bits = verdicts; bits != 0u; bits &= bits - 1u, ++rank) {
+        uint i = projectionOrder[first + uint(findLSB(bits))];
+        atomicOr(survivorWords[rank >> 1u], i << (16u * (rank & 1u)));  // neighbouring runs may share a word
+    }
+    if (lid == 0u) survivorCount = total;
     barrier();
     // Possible occluders: every reflector (either side facing) whose screen rectangle meets the
     // pixels the survivors can write to.

@@ -9,6 +9,7 @@
 namespace ppr::passes {
 
 static_assert(gpu::kPprCullMinHeight < gpu::kPprAboveEpsilon, "culling must keep every tile the projection can write from");
+static_assert(gpu::kPprMaxReflectors <= 32u * gpu::kPprProjectThreads, "each invocation judges a run of at most 32 reflectors (one bit mask)");
 
 PprProjectPass::PprProjectPass(const vk::Context& ctx) : ctx_(ctx) {
     shader::PipelineLayoutDesc layout;
