@@ -87,6 +87,11 @@ nlohmann::json techniqueJson(const BenchResults& r, const BenchTechnique& t) {
     if (const auto ratio = benchRatio(r, t.techniqueMs, "ppr")) e["ratio_to_ppr"] = *ratio;
     if (const auto ratio = benchRatio(r, t.techniqueMs, "floor")) e["ratio_to_floor"] = *ratio;
     if (const auto build = hizBuildMs(t)) e["hiz_build_ms"] = *build;
+    if (const auto parts = pprCostParts(t)) {
+        e["planar_gpu_ms"] = parts->planar;
+        e["glass_gpu_ms"] = parts->glass;
+        e["fallback_gpu_ms"] = parts->fallback;
+    }
     e["psnr_db"] = numberOrNull(t.psnrDb);
     e["psnr_reflection_db"] = numberOrNull(t.psnrReflectionDb);
     e["coverage"] = numberOrNull(t.coverage);
@@ -106,6 +111,11 @@ std::string techniquesTable(const BenchResults& r) {
               fixedOr(t.coverage, 4, "ref") + " | " + fixed(t.frameMs, 2) + " |\n";
         // The hierarchy build alone, as the slides quote it apart from the trace.
         if (const auto build = hizBuildMs(t)) md += cost("↳ " + t.name + " hierarchy build (hiz.*)", *build) + "| | | |\n";
+        if (const auto parts = pprCostParts(t)) {
+            md += cost("↳ " + t.name + " planar part (tiles.*, ppr.*)", parts->planar) + "| | | |\n";
+            md += cost("↳ " + t.name + " glass atlas (ppr.glass.*)", parts->glass) + "| | | |\n";
+            md += cost("↳ " + t.name + " fallback (hiz.*, ppr.fallback)", parts->fallback) + "| | | |\n";
+        }
     }
     return md;
 }
@@ -183,6 +193,18 @@ std::optional<double> hizBuildMs(const BenchTechnique& t) {
     auto isHiz = [](const std::string& pass) { return pass.rfind("hiz.", 0) == 0; };
     if (std::none_of(t.passMs.begin(), t.passMs.end(), [&](const auto& p) { return isHiz(p.first); })) return std::nullopt;
     return sumPasses(t.passMs, isHiz);
+}
+
+std::optional<PprCostParts> pprCostParts(const BenchTechnique& t) {
+    if (!t.passMs.count("ppr.project")) return std::nullopt;
+    PprCostParts parts;
+    for (const auto& [pass, ms] : t.passMs) {
+        if (!t.costPasses.count(pass)) continue;
+        if (pass.rfind("ppr.glass.", 0) == 0) parts.glass += ms;
+        else if (pass.rfind("hiz.", 0) == 0 || pass == "ppr.fallback") parts.fallback += ms;
+        else parts.planar += ms;
+    }
+    return parts;
 }
 
 std::optional<double> benchRatio(const BenchResults& r, double ms, const std::string& reference) {

@@ -49,6 +49,13 @@ struct BenchResults {
 
 // The depth hierarchy build alone (hiz.* passes); absent when the technique built none.
 std::optional<double> hizBuildMs(const BenchTechnique& technique);
+// PPR's GPU ms in three parts that add up to it: the planar part (tile classification and PPR's own
+// passes), the glass atlas (ppr.glass.*) and the fallback (the depth hierarchy and ppr.fallback).
+// Absent for a technique without a projection pass.
+struct PprCostParts {
+    double planar = 0.0, glass = 0.0, fallback = 0.0;
+};
+std::optional<PprCostParts> pprCostParts(const BenchTechnique& technique);
 // `ms` over the GPU ms of the technique named `reference` (ppr, floor); absent when the reference
 // was not measured or took no time.
 std::optional<double> benchRatio(const BenchResults& results, double ms, const std::string& reference);

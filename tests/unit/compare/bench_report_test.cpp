@@ -88,6 +88,24 @@ TEST(BenchReport, HierarchyBuildIsTheSumOfHizPassesAndAbsentWithoutThem) {
     EXPECT_FALSE(hizBuildMs(find(r, "floor")));
 }
 
+TEST(BenchReport, PprCostSplitsIntoPlanarGlassAndFallbackThatAddUp) {
+    const BenchTechnique ppr = technique("ppr", withScene({{"tiles.classify", 0.5}, {"ppr.project", 2.0}, {"ppr.reflect", 0.25},
+                                                           {"ppr.glass.clear", 0.125}, {"ppr.glass.reflect", 1.0},
+                                                           {"hiz.build.0", 0.375}, {"ppr.fallback", 0.75}}));
+    const auto parts = pprCostParts(ppr);
+    ASSERT_TRUE(parts);
+    EXPECT_DOUBLE_EQ(parts->planar, 2.75);
+    EXPECT_DOUBLE_EQ(parts->glass, 1.125);
+    EXPECT_DOUBLE_EQ(parts->fallback, 1.125);
+    EXPECT_DOUBLE_EQ(parts->planar + parts->glass + parts->fallback, ppr.techniqueMs);
+    const BenchResults r = results();
+    EXPECT_FALSE(pprCostParts(find(r, "ssr-hiz")));
+    const nlohmann::json j = benchJson(r)["techniques"]["results"];
+    EXPECT_DOUBLE_EQ(j["ppr"]["planar_gpu_ms"].get<double>(), 0.8);
+    EXPECT_DOUBLE_EQ(j["ppr"]["fallback_gpu_ms"].get<double>(), 0.2);
+    EXPECT_FALSE(j["ssr-hiz"].contains("planar_gpu_ms"));
+}
+
 TEST(BenchReport, RatiosToPprAndFloor) {
     const BenchResults r = results();
     EXPECT_DOUBLE_EQ(*benchRatio(r, find(r, "ssr-brute").techniqueMs, "ppr"), 20.0);
