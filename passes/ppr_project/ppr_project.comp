@@ -185,7 +185,6 @@ ivec2 pixelOf(uint j) {
 // Projects one pixel of the tile, at world position p, into every reflector among the candidates
 // that reflects it.
 void projectPixel(ivec2 pix, vec3 p, uint candidates, uint occluders) {
-
     vec3 eye = frame.cameraPos.xyz;
     vec3 surfaceNormal = pc.facingOnly != 0u ? texelFetch(normalTex, pix, 0).xyz : vec3(0.0);
     float above = kPprAboveEpsilon + kPprAboveEpsilonPerMetre * distance(eye, p);
@@ -255,8 +254,9 @@ void main() {
         if (depth <= 0.0) continue;  // sky: no position to mirror
         vec3 p = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depth);
         points[j] = vec4(p, 1.0);
-        lo = min(lo, uvec3(orderedFromFloat(p.x), orderedFromFloat(p.y), orderedFromFloat(p.z)));
-        hi = max(hi, uvec3(orderedFromFloat(p.x), orderedFromFloat(p.y), orderedFromFloat(p.z)));
+        uvec3 ordered = uvec3(orderedFromFloat(p.x), orderedFromFloat(p.y), orderedFromFloat(p.z));
+        lo = min(lo, ordered);
+        hi = max(hi, ordered);
     }
     lo = subgroupMin(lo);
     hi = subgroupMax(hi);

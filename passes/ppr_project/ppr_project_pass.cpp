@@ -9,6 +9,7 @@
 namespace ppr::passes {
 
 static_assert(gpu::kPprCullMinHeight < gpu::kPprAboveEpsilon, "culling must keep every tile the projection can write from");
+static_assert(gpu::kPprTileSize * gpu::kPprTileSize % gpu::kPprProjectThreads == 0, "every invocation projects the same number of pixels");
 static_assert(gpu::kPprMaxReflectors <= 32u * gpu::kPprProjectThreads, "each invocation judges a run of at most 32 reflectors (one bit mask)");
 
 PprProjectPass::PprProjectPass(const vk::Context& ctx) : ctx_(ctx) {
