@@ -25,7 +25,7 @@ void FrameConstantsBuffer::reserveViews(uint32_t views) {
 }
 
 void FrameConstantsBuffer::beginFrame(uint32_t slot, const scene::CameraPose& camera, VkExtent2D extent, const ViewSettings& view,
-                                      const glm::mat4& lightViewProj) {
+                                      const glm::mat4& lightViewProj, glm::vec2 jitterPixels) {
     slot_ = slot;
     extent_ = extent;
     eye_ = camera.position;
@@ -33,8 +33,15 @@ void FrameConstantsBuffer::beginFrame(uint32_t slot, const scene::CameraPose& ca
     gpu::FrameConstants f{};
     const float aspect = static_cast<float>(extent.width) / static_cast<float>(extent.height);
     f.view = scene::viewMatrix(camera);
-    f.proj = scene::projectionMatrix(camera.fovYDeg, aspect, scene::kNearPlane);
+    const glm::mat4 unjittered = scene::projectionMatrix(camera.fovYDeg, aspect, scene::kNearPlane);
+    const glm::vec2 screen(extent.width, extent.height);
+    // Only a non-zero jitter touches the matrix: with TAA off the frame stays bit-identical.
+    f.proj = jitterPixels == glm::vec2(0.0f) ? unjittered : scene::jitteredProjection(unjittered, jitterPixels, screen);
     f.viewProj = f.proj * f.view;
+    const glm::mat4 viewProjUnjittered = unjittered * f.view;
+    f.prevViewProj = prevViewProj_.value_or(viewProjUnjittered);
+    prevViewProj_ = viewProjUnjittered;
+    f.jitter = glm::vec4(2.0f * jitterPixels / screen, 0.0f, 0.0f);
     f.invViewProj = glm::inverse(f.viewProj);
     const glm::vec3 lightDir = glm::normalize(glm::vec3(-0.45f, -0.8f, -0.4f));
     f.lightViewProj = lightViewProj;

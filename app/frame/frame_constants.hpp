@@ -24,8 +24,9 @@ public:
     // Room for the main view and one mirrored view per reflector (waits for the device when it grows).
     void reserveViews(uint32_t views);
     // Writes `slot`'s main view; starts the frame (mirrored views are written on first request).
+    // `jitterPixels` moves the projection by a sub-pixel offset (TAA; zero leaves it untouched).
     void beginFrame(uint32_t slot, const scene::CameraPose& camera, VkExtent2D extent, const ViewSettings& view,
-                    const glm::mat4& lightViewProj);
+                    const glm::mat4& lightViewProj, glm::vec2 jitterPixels);
     const gpu::FrameConstants& main() const { return main_; }
     passes::FrameInputs inputs(const ReflectorSet& reflectors, uint32_t view = 0) const;
     // One mirrored view per plane group with a visible reflector, in group order (written once a frame).
@@ -46,6 +47,7 @@ private:
     VkExtent2D extent_{};
     glm::vec3 eye_{};
     gpu::FrameConstants main_{};
+    std::optional<glm::mat4> prevViewProj_;  // last frame's, unjittered (none before the first frame)
     std::optional<std::vector<passes::PlanarView>> mirrored_;  // this frame's, once requested
 };
 

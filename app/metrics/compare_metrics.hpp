@@ -75,6 +75,10 @@ ReflectionScore scoreReflection(const FloatImage& technique, const FloatImage& r
 double compositedPsnrDb(const util::Rgba8Image& technique, const util::Rgba8Image& reference, const FloatImage& referenceReflection,
                         const PixelRect* region = nullptr);
 
+// PSNR of two whole display images (rgb, 8-bit, peak 255), capped at kPsnrCapDb: TAA against its
+// supersampled reference. Throws std::invalid_argument when the sizes differ.
+double imagePsnrDb(const util::Rgba8Image& a, const util::Rgba8Image& b);
+
 // The reflection term as the user sees it: displayFromRadiance(rgb) where alpha > 0, black elsewhere;
 // 8-bit sRGB (display value * 255, rounded), alpha 255.
 util::Rgba8Image reflectionDisplayImage(const FloatImage& reflection, float exposure);

@@ -7,6 +7,7 @@
 #include "hiz/hiz.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 namespace ppr::app {
@@ -110,7 +111,7 @@ VkCommandBuffer HeadlessRenderer::beginSlot(uint32_t slot) {
 }
 
 CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExtent2D extent, uint32_t frames, bool dumpGraph,
-                                        bool readReflection) {
+                                        bool readReflection, bool newShot) {
     ensureTargets(extent);
     frames = std::max(frames, 1u);
     CaptureResult result;
@@ -157,6 +158,8 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
         req.reference = reference_;
         req.settings = settings_.values();
         req.target = &targetImport_;
+        req.cameraCut = newShot && f == 0;  // TAA starts from this camera's own frames
+        req.jitter = jitter_;
         const bool last = f + 1 == frames;
         abTaps_.attach(req.taps, ab_, abSplit_);
         if (last) req.taps.push_back(readbackTap(ReadbackSource::Final, &readbackImport_));
@@ -206,6 +209,25 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
     result.totalMedianMs = median(totals);
     result.medianFrames = uint32_t(totals.size());
     return result;
+}
+
+util::Rgba8Image HeadlessRenderer::captureSupersampled(const scene::CameraPose& camera, VkExtent2D extent, uint32_t samples) {
+    const Settings before = settings_;
+    settings_.set("taa", "0");
+    std::vector<double> sum(size_t(extent.width) * extent.height * 4, 0.0);
+    for (uint32_t i = 0; i < samples; ++i) {
+        jitter_ = scene::haltonJitter(i);
+        const CaptureResult frame = capture(camera, extent, 1);
+        for (size_t k = 0; k < sum.size(); ++k) sum[k] += frame.image.pixels[k];
+    }
+    jitter_.reset();
+    settings_ = before;
+    util::Rgba8Image out;
+    out.width = extent.width;
+    out.height = extent.height;
+    out.pixels.resize(sum.size());
+    for (size_t k = 0; k < sum.size(); ++k) out.pixels[k] = static_cast<uint8_t>(std::lround(sum[k] / std::max(samples, 1u)));
+    return out;
 }
 
 DepthCapture HeadlessRenderer::captureDepth(const scene::CameraPose& camera, VkExtent2D extent) {

@@ -50,9 +50,13 @@ public:
     HeadlessRenderer& operator=(const HeadlessRenderer&) = delete;
 
     // Renders `frames` frames (≥ 1) of the camera at the extent; the last one is read back (and its
-    // reflection image too when `readReflection`).
+    // reflection image too when `readReflection`). `newShot`: the first frame is a camera cut (TAA's
+    // history is dropped); a camera path's later frames pass false to continue the shot.
     CaptureResult capture(const scene::CameraPose& camera, VkExtent2D extent, uint32_t frames, bool dumpGraph = false,
-                          bool readReflection = false);
+                          bool readReflection = false, bool newShot = true);
+    // The supersampled reference of TAA: `samples` frames (taa off) each moved by the next Halton (2, 3)
+    // jitter (scene::haltonJitter), their display images averaged per channel. Timings are not kept.
+    util::Rgba8Image captureSupersampled(const scene::CameraPose& camera, VkExtent2D extent, uint32_t samples);
     // Renders one frame of the camera at the extent and reads back its depth and depth hierarchy.
     DepthCapture captureDepth(const scene::CameraPose& camera, VkExtent2D extent);
 
@@ -101,6 +105,7 @@ private:
     AbCompareTaps abTaps_;
     AbView ab_ = AbView::Off;
     float abSplit_ = 0.5f;
+    std::optional<glm::vec2> jitter_;  // captureSupersampled's current sample
     void ensureGlassReadback(uint32_t atlasSize);
 };
 

@@ -34,6 +34,7 @@ Renderer::Renderer(const vk::Context& ctx, const scene::Scene& scene) : ctx_(ctx
     glassForward_ = std::make_unique<passes::GlassForwardPass>(ctx, *gpuScene_);
     tonemap_ = std::make_unique<passes::TonemapPass>(ctx);
     tonemap_->prepare(kCaptureFormat);
+    taa_ = std::make_unique<passes::TaaPass>(ctx);
     tileClassify_ = std::make_unique<passes::TileClassifyPass>(ctx);
     hiz_ = std::make_unique<passes::HizPass>(ctx);
     glassReflect_ = std::make_unique<passes::GlassReflectPass>(ctx);
@@ -62,6 +63,7 @@ Renderer::~Renderer() {
     glassReflect_.reset();
     hiz_.reset();
     tileClassify_.reset();
+    taa_.reset();
     tonemap_.reset();
     glassForward_.reset();
     composite_.reset();
@@ -89,6 +91,16 @@ std::string Renderer::unsupported(const std::string& technique, VkExtent2D exten
     return t ? t->unsupported(extent) : std::string();
 }
 
+void Renderer::resetTaaHistory(const FrameRequest& req) {
+    graph::HistoryStore& history = executor_->history();
+    const bool changed = !lastTechnique_.empty() && lastTechnique_ != req.technique;
+    lastTechnique_ = req.technique;
+    if (!history.contains(passes::TaaPass::kHistoryName)) return;
+    // A resize needs nothing here: the store reallocates and resets a pair whose size changed.
+    if (changed) history.reset(passes::TaaPass::kHistoryName, "technique change");
+    if (req.cameraCut) history.reset(passes::TaaPass::kHistoryName, "camera cut");
+}
+
 void Renderer::runTaps(const FrameRequest& req, TapPoint point, TapContext& ctx) {
     for (const FrameTap& tap : req.taps)
         if (tap.point == point) tap.add(ctx);
@@ -103,10 +115,15 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
         else rec.warning = technique->warning(*services_);
     }
     const FrameSettings& settings = req.settings;
+    // TAA resolves the frame as shown; a debug view is data, not an image to accumulate.
+    const bool taa = settings.taa.enabled && settings.view.debug == gpu::kDebugNone;
+    resetTaaHistory(req);
+    const glm::vec2 jitter = req.jitter ? *req.jitter : taa ? scene::haltonJitter(taaFrames_++) : glm::vec2(0.0f);
     stats_->beginFrame(slot);
     glass_->beginFrame(slot);
     reflectors_->update(slot);
-    constants_->beginFrame(slot, req.camera, req.extent, settings.view, lightViewProjection(scene_, glm::normalize(glm::vec3(-0.45f, -0.8f, -0.4f))));
+    constants_->beginFrame(slot, req.camera, req.extent, settings.view, lightViewProjection(scene_, glm::normalize(glm::vec3(-0.45f, -0.8f, -0.4f))),
+                           jitter);
     const passes::FrameInputs in = constants_->inputs(*reflectors_);
 
     graph::RenderGraph g;
@@ -142,6 +159,7 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
         hdr = glassForward_->add(g, in, hdr, gb.depth, frame.reflectorData(), glassReflection, &glassOrder_);
         if (glass && settings.view.debug == gpu::kDebugAtlas) hdr = glassReflect_->addAtlasView(g, in, glass->atlas, hdr);
     }
+    if (taa) hdr = taa_->add(g, in, executor_->history(), hdr, gb.depth);
     board.put(HdrColor{hdr});
     runTaps(req, TapPoint::AfterGlass, taps);
 

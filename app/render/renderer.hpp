@@ -1,5 +1,5 @@
 #pragma once
-// The trunk: shadow → gbuffer → lighting → [the request's technique] → composite → glass → tonemap,
+// The trunk: shadow → gbuffer → lighting → [the request's technique] → composite → glass → [taa] → tonemap,
 // all through the render graph, with the request's taps attached at their points. The request
 // carries the frame's choices by value (technique, settings); the renderer keeps only what lives
 // across frames: pipelines, the GPU scene, the reflector set, per-slot buffers, the technique modules.
@@ -10,6 +10,7 @@
 #include "render/frame_tap.hpp"
 #include "settings/settings.hpp"
 #include "shadow/shadow_pass.hpp"
+#include "taa/taa_pass.hpp"
 #include "tonemap/tonemap_pass.hpp"
 
 #include <memory>
@@ -28,6 +29,10 @@ struct FrameRequest {
     graph::ExternalImage* target = nullptr;  // tonemapped output (swapchain image) or null → transient
     std::vector<FrameTap> taps;
     bool dumpGraph = false;  // keep the Graphviz text of this frame's graph
+    // TAA: a camera cut (a jump, not motion) drops the history. `jitter` overrides the sub-pixel
+    // offset in pixels whatever taa says (the supersampled reference's samples).
+    bool cameraCut = false;
+    std::optional<glm::vec2> jitter;
 };
 
 struct FrameRecord {
@@ -72,6 +77,7 @@ public:
 
 private:
     Technique* module(const std::string& technique) const;
+    void resetTaaHistory(const FrameRequest& req);
     static void runTaps(const FrameRequest& req, TapPoint point, TapContext& ctx);
 
     const vk::Context& ctx_;
@@ -84,6 +90,7 @@ private:
     std::unique_ptr<passes::CompositePass> composite_;
     std::unique_ptr<passes::GlassForwardPass> glassForward_;
     std::unique_ptr<passes::TonemapPass> tonemap_;
+    std::unique_ptr<passes::TaaPass> taa_;
     std::unique_ptr<passes::TileClassifyPass> tileClassify_;
     std::unique_ptr<passes::HizPass> hiz_;
     std::unique_ptr<passes::GlassReflectPass> glassReflect_;
@@ -96,6 +103,8 @@ private:
     std::vector<std::unique_ptr<Technique>> modules_;  // one per techniqueTable() row (null: none)
     std::unique_ptr<graph::GraphExecutor> executor_;
     std::vector<uint32_t> glassOrder_;  // this frame's transparent draws, back to front (reused)
+    uint32_t taaFrames_ = 0;            // TAA frames recorded: the jitter sequence's position
+    std::string lastTechnique_;         // a technique change drops TAA's history
 };
 
 }  // namespace ppr::app

@@ -19,6 +19,8 @@ const std::vector<DebugViewDecl>& debugViews() {
         {"holes", gpu::kDebugHoles, "ppr.reflect", "PPR's hole mask: own data / hole-filled / no data per reflector pixel"},
         {"tiles", gpu::kDebugTiles, "ppr.reflect", "reflectors surviving PPR's per-tile culling, as a heat map"},
         {"atlas", gpu::kDebugAtlas, "glass.atlas_view", "PPR's glass reflection atlas, fitted to the screen height"},
+        {"motion", gpu::kDebugMotion, "composite",
+         "TAA's motion to last frame: black = still, hue = direction, brightness = length (full at 4 px), magenta = behind last frame's camera"},
     };
     return views;
 }

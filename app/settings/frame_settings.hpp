@@ -41,6 +41,10 @@ struct GlassSettings {       // owner: glass (PPR's glass atlas and the planar r
     uint32_t atlas;          // texels per side
 };
 
+struct TaaSettings {         // owner: taa (passes/taa)
+    bool enabled;            // jitter + temporal resolve of the HDR frame (off while a debug view is shown)
+};
+
 struct FrameSettings {
     ViewSettings view;
     TileSettings tiles;
@@ -48,6 +52,7 @@ struct FrameSettings {
     SsrSettings ssr;
     GlassSettings glass;
     EnvSettings env;
+    TaaSettings taa;
 };
 
 }  // namespace ppr::app

@@ -152,6 +152,9 @@ const std::vector<SettingDecl>& settingDecls() {
                "PPR reflections in glass panels, through the glass atlas (0: glass only transmits)"),
         integer("glass_atlas", "glass", [](FrameSettings& s) -> uint32_t& { return s.glass.atlas; }, 1024, 64, 8192,
                 "texels per side of the glass atlas (PPR's intermediate buffer for glass panels)"),
+        toggle("taa", "taa", [](FrameSettings& s) -> bool& { return s.taa.enabled; }, false,
+               "temporal anti-aliasing: Halton (2, 3) jitter of 16 samples, history reprojected by depth and the previous "
+               "view-projection, YCoCg variance clipping, Catmull-Rom history sample (0: off, bit-identical frames)"),
         number("exposure", "frame", [](FrameSettings& s) -> float& { return s.view.exposure; }, 1, 0.01, 100.0, "exposure multiplier before tonemapping"),
         integer("shadowres", "frame", [](FrameSettings& s) -> uint32_t& { return s.view.shadowRes; }, 2048, 256, 8192,
                 "shadow map resolution (texels per side)"),

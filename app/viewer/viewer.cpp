@@ -35,6 +35,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace ppr::app {
 
@@ -182,6 +183,7 @@ private:
     scene::FlyCamera camera_;
     std::string cameraName_;
     int cameraIndex_ = -1;
+    bool cameraCut_ = false;  // the next frame starts a new shot (a jump to a named camera)
     bool vsync_ = true;
     bool swapchainDirty_ = false;
     bool looking_ = false;
@@ -387,6 +389,7 @@ void Viewer::buildUi() {
         cameraIndex_ = a.jumpToCamera;
         camera_.pose = cameras_[static_cast<size_t>(cameraIndex_)].pose;
         cameraName_ = cameras_[static_cast<size_t>(cameraIndex_)].name;
+        cameraCut_ = true;  // a jump, not motion: TAA must not blend the old view into the new one
     }
     if (a.vsyncChanged) {
         vsync_ = m.vsync;
@@ -433,6 +436,7 @@ bool Viewer::renderFrame(uint32_t slot) {
     req.technique = holdCompare ? reference_ : technique_;
     req.reference = reference_;
     req.settings = settings_.values();
+    req.cameraCut = std::exchange(cameraCut_, false);
     if (pendingClick_) {  // the G-buffer under the click, read back once this slot's fence signals
         req.taps.push_back(pickTap_->tap(pickPixel_, &pickImport_[slot]));
         pickIssued_[slot] = true;

@@ -26,6 +26,27 @@ void yawPitchFromDirection(const glm::vec3& dir, float& yawDeg, float& pitchDeg)
     yawDeg = glm::degrees(std::atan2(d.x, -d.z));
 }
 
+namespace {
+float radicalInverse(uint32_t index, uint32_t base) {
+    float result = 0.0f, digit = 1.0f / static_cast<float>(base);
+    for (; index > 0; index /= base, digit /= static_cast<float>(base)) result += static_cast<float>(index % base) * digit;
+    return result;
+}
+}  // namespace
+
+glm::vec2 haltonJitter(uint32_t frame) {
+    const uint32_t index = frame % kJitterLength + 1;
+    return {radicalInverse(index, 2) - 0.5f, radicalInverse(index, 3) - 0.5f};
+}
+
+glm::mat4 jitteredProjection(const glm::mat4& proj, glm::vec2 offsetPixels, glm::vec2 screenSize) {
+    // Clip x' = x + dx·w, so NDC x' = x/w + dx: a translation in NDC, whatever the projection.
+    glm::mat4 shift(1.0f);
+    shift[3][0] = 2.0f * offsetPixels.x / screenSize.x;
+    shift[3][1] = 2.0f * offsetPixels.y / screenSize.y;
+    return shift * proj;
+}
+
 glm::mat4 viewMatrix(const CameraPose& pose) {
     // Same as glm::lookAt(pos, pos + dir, +Y), but the right vector comes from yaw alone so the
     // matrix stays defined at pitch ±90 where dir is parallel to +Y.

@@ -6,6 +6,7 @@
 // space (y down in NDC is handled by a negative y scale, depth 0..1).
 #include <glm/glm.hpp>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -24,6 +25,14 @@ void yawPitchFromDirection(const glm::vec3& dir, float& yawDeg, float& pitchDeg)
 glm::mat4 viewMatrix(const CameraPose& pose);
 glm::mat4 projectionMatrix(float fovYDeg, float aspect, float nearPlane);  // reverse-Z, infinite far
 constexpr float kNearPlane = 0.05f;
+
+// TAA's sub-pixel jitter: the Halton (2, 3) sequence, samples 1..kJitterLength repeating, as an offset
+// in pixels in (-0.5, 0.5)². Sample 0 (the origin of both bases) is skipped: it would be a corner.
+constexpr uint32_t kJitterLength = 16;
+glm::vec2 haltonJitter(uint32_t frame);
+// `proj` moved by `offsetPixels` on a screen of `screenSize` pixels: every projected point lands that
+// many pixels further right/down (NDC x and y), depth untouched.
+glm::mat4 jitteredProjection(const glm::mat4& proj, glm::vec2 offsetPixels, glm::vec2 screenSize);
 
 // "x,y,z,yawDeg,pitchDeg[,fovYDeg]" → pose; nullopt when `text` is not in that form (then it is a
 // camera name). Throws std::runtime_error for a numeric form with NaN/inf or out-of-range FOV.

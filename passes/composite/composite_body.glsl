@@ -5,6 +5,7 @@
 #include "common/reflection.h"
 #include "common/reflector_data.h"
 #include "lighting/lighting.h"
+#include "taa/taa_motion.glsl"
 
 layout(local_size_x = kLightingGroupSize, local_size_y = kLightingGroupSize) in;
 layout(set = 0, binding = 1) uniform sampler2D sceneColor;
@@ -52,6 +53,15 @@ void main() {
     else if (view == kDebugNormals) c = texelFetch(normalTex, pix, 0).xyz * 0.5 + 0.5;
     else if (view == kDebugRoughness) c = texelFetch(materialTex, pix, 0).rgb;
     else if (view == kDebugDepth) c = vec3(pow(texelFetch(depthTex, pix, 0).r, 0.25));
+    else if (view == kDebugMotion) {
+        float prevW;
+        vec2 uv = (vec2(pix) + 0.5) * frame.invScreenSize;
+        vec2 motion = (previousUv(uv, texelFetch(depthTex, pix, 0).r, prevW) - uv) * frame.screenSize;
+        // Black = still; the hue gives the direction, the brightness the length (full at the range).
+        float len = length(motion);
+        vec2 dir = len > 0.0 ? motion / len : vec2(0.0);
+        c = prevW > 0.0 ? vec3(0.5 + 0.5 * dir, 0.5) * min(len / kDebugMotionRange, 1.0) : vec3(1.0, 0.0, 1.0);
+    }
     else if (view == kDebugReflectors) {
         if (id != 0u) c = mix(c, idColor(id), 0.6);
     }

@@ -291,3 +291,18 @@ TEST(CompareMetrics, AllReflectorPixelsAddsTheOffscreenOnesAndKeepsSecondBounces
     EXPECT_EQ(all.rgba[3 * 4 + 3], kReflectionNone);
     EXPECT_EQ(all.rgba[0], ref.rgba[0]);  // colours untouched
 }
+
+TEST(CompareMetrics, ImagePsnrOfWholeDisplayImages) {
+    ppr::util::Rgba8Image a, b;
+    a.width = b.width = 4;
+    a.height = b.height = 2;
+    a.pixels.assign(4 * 2 * 4, 100);
+    b.pixels = a.pixels;
+    EXPECT_EQ(imagePsnrDb(a, b), kPsnrCapDb);
+    // Every colour channel off by 25 (up or down); alpha differs too but is not compared.
+    for (size_t i = 0; i < b.pixels.size(); ++i)
+        b.pixels[i] = static_cast<uint8_t>(i % 4 == 3 ? 0 : i % 2 ? 100 + 25 : 100 - 25);
+    EXPECT_NEAR(imagePsnrDb(a, b), 10.0 * std::log10(1.0 / std::pow(25.0 / 255.0, 2)), 1e-9);
+    b.width = 8;
+    EXPECT_THROW(imagePsnrDb(a, b), std::invalid_argument);
+}

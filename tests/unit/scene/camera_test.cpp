@@ -174,3 +174,39 @@ TEST(FlyCamera, ScrollSpeed) {
     cam.scrollSpeed(-1000);
     EXPECT_FLOAT_EQ(cam.speed, 0.05f);
 }
+
+TEST(CameraJitter, HaltonTwoThreeSamplesInsideThePixelAndRepeating) {
+    // Halton index 1 = (1/2, 1/3), index 2 = (1/4, 2/3), index 3 = (3/4, 1/9), minus 0.5.
+    EXPECT_NEAR(haltonJitter(0).x, 0.0f, 1e-6f);
+    EXPECT_NEAR(haltonJitter(0).y, 1.0f / 3.0f - 0.5f, 1e-6f);
+    EXPECT_NEAR(haltonJitter(1).x, -0.25f, 1e-6f);
+    EXPECT_NEAR(haltonJitter(1).y, 2.0f / 3.0f - 0.5f, 1e-6f);
+    EXPECT_NEAR(haltonJitter(2).x, 0.25f, 1e-6f);
+    EXPECT_NEAR(haltonJitter(2).y, 1.0f / 9.0f - 0.5f, 1e-6f);
+    glm::vec2 mean(0.0f);
+    for (uint32_t i = 0; i < kJitterLength; ++i) {
+        const glm::vec2 j = haltonJitter(i);
+        EXPECT_GT(j.x, -0.5f);
+        EXPECT_LT(j.x, 0.5f);
+        EXPECT_GT(j.y, -0.5f);
+        EXPECT_LT(j.y, 0.5f);
+        EXPECT_EQ(haltonJitter(i + kJitterLength), j);
+        mean += j / float(kJitterLength);
+    }
+    // A low-discrepancy sequence is centred on the pixel (within a sixteenth of a pixel here).
+    EXPECT_LT(std::abs(mean.x), 1.0f / 16.0f);
+    EXPECT_LT(std::abs(mean.y), 1.0f / 16.0f);
+}
+
+TEST(CameraJitter, JitteredProjectionMovesEveryPointByTheOffsetInPixels) {
+    const glm::vec2 screen(640.0f, 360.0f), offset(0.3f, -0.2f);
+    const glm::mat4 proj = projectionMatrix(60.0f, screen.x / screen.y, kNearPlane);
+    const glm::mat4 jittered = jitteredProjection(proj, offset, screen);
+    for (const glm::vec3 p : {glm::vec3(0.0f, 0.0f, -1.0f), glm::vec3(2.0f, -1.0f, -7.0f), glm::vec3(-30.0f, 4.0f, -300.0f)}) {
+        const glm::vec4 a = proj * glm::vec4(p, 1.0f), b = jittered * glm::vec4(p, 1.0f);
+        const glm::vec2 pixelsA = glm::vec2(a) / a.w * 0.5f * screen, pixelsB = glm::vec2(b) / b.w * 0.5f * screen;
+        EXPECT_NEAR(pixelsB.x - pixelsA.x, offset.x, 1e-3f);
+        EXPECT_NEAR(pixelsB.y - pixelsA.y, offset.y, 1e-3f);
+        EXPECT_FLOAT_EQ(b.z / b.w, a.z / a.w);
+    }
+}

@@ -1,0 +1,11 @@
+// TAA's reprojection, shared by the resolve and the `motion` debug view (needs common/bindings.glsl).
+// Where the surface seen at `uv` (a pixel centre of this jittered frame) with reverse-Z `depth` lay on
+// last frame's screen: through the world position (homogeneous throughout, so the sky at depth 0 moves
+// as a direction) and last frame's unjittered view-projection. Motion is measured between unjittered
+// positions, so a still camera gives `uv` itself. `prevW` ≤ 0: the point was behind last frame's camera.
+vec2 previousUv(vec2 uv, float depth, out float prevW) {
+    vec2 ndc = uv * 2.0 - 1.0;
+    vec4 prevClip = frame.prevViewProj * (frame.invViewProj * vec4(ndc, depth, 1.0));
+    prevW = prevClip.w;
+    return uv + 0.5 * (prevClip.xy / prevClip.w - (ndc - frame.jitter.xy));
+}

@@ -1,0 +1,32 @@
+#include "taa/taa_pass.hpp"
+
+#include "common/compute_pass.hpp"
+#include "taa/taa.h"
+#include "taa_comp.h"
+
+namespace ppr::passes {
+
+TaaPass::TaaPass(const vk::Context& ctx) : ctx_(ctx) {
+    shader::PipelineLayoutDesc layout;
+    layout.pushConstantBytes = sizeof(gpu::TaaPush);
+    pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(taa_comp), layout, "taa");
+}
+
+graph::ImageHandle TaaPass::add(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history, graph::ImageHandle hdr,
+                                graph::ImageHandle depth) const {
+    const graph::HistoryImage h = g.history(history, kHistoryName, {in.extent.width, in.extent.height, kHistoryFormat, 1});
+    gpu::TaaPush push{};
+    push.historyValid = h.previousValid ? 1u : 0u;
+    graph::ImageHandle out;
+    ComputePass(g, ctx_, "taa", pipeline_)
+        .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
+        .sampled(hdr, in.samplers->nearestClamp)
+        .sampled(depth, in.samplers->nearestClamp)
+        .sampled(h.previous, in.samplers->linearClamp)
+        .storageWrite(h.current, &out)
+        .push(push)
+        .dispatch(in.extent, gpu::kTaaGroupSize);
+    return out;
+}
+
+}  // namespace ppr::passes
