@@ -7,8 +7,34 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 
 namespace ppr::app {
+namespace {
+
+// --path: one shot along the path, every frame read back (frames/frame_NNN.png) with its pose and GPU
+// time in frames.csv; returns the last frame's result (its report and final.png).
+CaptureResult capturePath(HeadlessSession& s, const ResolvedCamera& cam, const std::filesystem::path& dir) {
+    const std::vector<scene::CameraPose> poses = s.path(cam);
+    util::prepareOutputDirectory(dir / "frames", "--out " + s.options.out);
+    std::ostringstream csv;
+    csv << "frame,x,y,z,yaw_deg,pitch_deg,frame_gpu_ms\n";
+    CaptureResult r;
+    for (size_t i = 0; i < poses.size(); ++i) {
+        r = s.headless->capture(poses[i], s.extent, 1, false, false, i == 0);
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%03zu.png", i);
+        util::writePng((dir / "frames" / name).string(), r.image);
+        const scene::CameraPose& p = poses[i];
+        csv << i << ',' << p.position.x << ',' << p.position.y << ',' << p.position.z << ',' << p.yawDeg << ',' << p.pitchDeg << ','
+            << r.totalMedianMs << '\n';
+    }
+    util::writeTextFile(dir / "frames.csv", csv.str());
+    r.frames = static_cast<uint32_t>(poses.size());
+    return r;
+}
+
+}  // namespace
 
 int runCapture(const Options& o) {
     HeadlessSession s(o);
@@ -18,7 +44,7 @@ int runCapture(const Options& o) {
     for (const ResolvedCamera& cam : s.cameras) {
         const std::filesystem::path dir = s.cameraDir(cam.name);
         const uint32_t errorsBefore = s.ctx->validationErrors();
-        CaptureResult r = s.headless->capture(cam.pose, s.extent, s.frames, o.dumpGraph);
+        CaptureResult r = o.path.empty() ? s.headless->capture(cam.pose, s.extent, s.frames, o.dumpGraph) : capturePath(s, cam, dir);
         if (!r.cullLog.empty()) std::fprintf(stderr, "%s", r.cullLog.c_str());
         if (!r.warning.empty()) std::fprintf(stderr, "ppr: warning: %s\n", r.warning.c_str());
         util::writePng((dir / "final.png").string(), r.image);
@@ -34,6 +60,7 @@ int runCapture(const Options& o) {
         info.validationEnabled = s.ctx->validationEnabled();
         info.validationErrors = s.ctx->validationErrors() - errorsBefore;
         info.images = {{"final", "final.png"}};
+        if (!o.path.empty()) info.images.insert({{"frames", "frames"}, {"frames_csv", "frames.csv"}});
         if (o.dumpGraph) {
             util::writeTextFile(dir / "graph.dot", r.dot);
             info.images["graph"] = "graph.dot";

@@ -84,6 +84,10 @@ std::string usage() {
            "  --reference R        compare: what the techniques are scored against, one of " + referenceNames() +
            " (default planar)\n"
            "  --set key=value      repeatable; keys (declared once: app/settings/settings.cpp):\n" + settingsUsage() +
+           "  --path P             capture, compare: render a camera path from the camera, one frame per pose, each frame\n"
+           "                       read back: still | strafe | dolly | orbit (--frames poses, default " + std::to_string(kDefaultPathFrames) + ") or a FILE with\n"
+           "                       one x,y,z,yawDeg,pitchDeg[,fovYDeg] per line; compare scores every frame against the\n"
+           "                       reference supersampled 16 times (metrics.json \"temporal\"; docs/temporal.md)\n"
            "  --frames N           frames to render (capture default 5: median GPU times over them; bench default 10)\n"
            "  --warmup N           bench: frames rendered before measuring (default 3)\n"
            "  --sweep S            bench, repeatable: techniques | reflectors | coverage (default: all three)\n"
@@ -115,6 +119,10 @@ static Options parseArguments(int argc, const char* const* argv) {
         else if (a == "--scene") o.scene = value(a);
         else if (a == "--reflectors") o.reflectors = value(a);
         else if (a == "--camera") o.camera = value(a);
+        else if (a == "--path") {
+            o.path = value(a);
+            if (o.path.empty()) throw std::runtime_error("--path: expected still, strafe, dolly, orbit or a file");
+        }
         else if (a == "--out") o.out = value(a);
         else if (a == "--validation") o.validation = true;
         else if (a == "--dump-graph") o.dumpGraph = true;
@@ -155,6 +163,8 @@ static Options parseArguments(int argc, const char* const* argv) {
             throw std::runtime_error("unknown option '" + a + "' (see ppr --help)");
         }
     }
+    if (!o.path.empty() && o.mode != Mode::Capture && o.mode != Mode::Compare)
+        throw std::runtime_error("--path " + o.path + ": only capture and compare render camera paths");
     if (o.mode == Mode::Bench && o.sweeps.empty()) o.sweeps = benchSweepNames();
     if (o.mode == Mode::Compare && o.techniques.empty()) o.techniques = {"ppr"};
     auto listsPpr = [&] {

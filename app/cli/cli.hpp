@@ -1,7 +1,7 @@
 #pragma once
 // Command line per the DESIGN.md contract (techniques and settings from their tables):
 //   ppr [view|capture|compare|bench] [--scene F] [--reflectors F] [--camera NAME|x,y,z,yaw,pitch[,fov]]
-//       [--size WxH] [--technique T] [--set key=value]... [--frames N] [--out DIR] [--validation]
+//       [--size WxH] [--technique T] [--set key=value]... [--frames N] [--path P] [--out DIR] [--validation]
 #include "settings/settings.hpp"
 
 #include <optional>
@@ -17,6 +17,7 @@ struct Options {
     std::string scene;       // empty = built-in default scene
     std::string reflectors;  // empty = scene sidecar / glTF extras
     std::string camera;      // empty = every named camera (capture) / the first (view)
+    std::string path;        // --path still|strafe|dolly|orbit|FILE (capture, compare); empty = no path
     uint32_t width = 1280, height = 720;
     std::string technique = "ppr";        // capture / view: the last --technique given
     std::vector<std::string> techniques;  // compare: every --technique given, in order (default: ppr)
@@ -47,6 +48,7 @@ const std::vector<std::string>& benchSweepNames();
 constexpr uint32_t kMinSize = 1;  // a 1-pixel-wide frame is valid (the validation sweep renders 1x4096)
 constexpr uint32_t kMaxSize = 8192;
 constexpr uint32_t kMaxFrames = 100000;
+constexpr uint32_t kDefaultPathFrames = 32;  // frames of a named --path without --frames
 
 // Throws std::runtime_error with one line naming the option and the problem.
 Options parseCommandLine(int argc, const char* const* argv);

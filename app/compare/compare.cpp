@@ -59,14 +59,6 @@ FloatImage emptyReflection(VkExtent2D extent) {  // technique `none`: no reflect
     return f;
 }
 
-// "ppr@normalmap=off,holes=0" → "ppr_normalmap-off_holes-0": a variant's name as a file name.
-std::string fileName(std::string t) {
-    for (char& c : t)
-        if (c == '@' || c == ',') c = '_';
-        else if (c == '=') c = '-';
-    return t;
-}
-
 // metrics.json's error_share_worst_* and error_classes (metrics/error_breakdown.hpp).
 nlohmann::json breakdownJson(const ErrorBreakdown& b) {
     nlohmann::json classes = nlohmann::json::object();
@@ -86,7 +78,15 @@ std::string fixed(double v, int digits) {
 
 }  // namespace
 
+std::string variantFileName(std::string t) {
+    for (char& c : t)
+        if (c == '@' || c == ',') c = '_';
+        else if (c == '=') c = '-';
+    return t;
+}
+
 int runCompare(const Options& o) {
+    if (!o.path.empty()) return runComparePath(o);
     HeadlessSession session(o);
     const vk::Context& ctx = *session.ctx;
     HeadlessRenderer& headless = *session.headless;
@@ -137,8 +137,8 @@ int runCompare(const Options& o) {
             const ReflectionScore s = scoreReflection(reflection, ref.reflection, exposure);
             const double psnr = compositedPsnrDb(r.image, ref.image, ref.reflection);
             const double ms = techniqueMs(headless.technique(), r);
-            const std::string finalFile = "final_" + fileName(t) + ".png", reflFile = "reflection_" + fileName(t) + ".png",
-                              errFile = "error_" + fileName(t) + ".png";
+            const std::string finalFile = "final_" + variantFileName(t) + ".png", reflFile = "reflection_" + variantFileName(t) + ".png",
+                              errFile = "error_" + variantFileName(t) + ".png";
             const util::Rgba8Image heat = errorHeatMap(reflection, ref.reflection, exposure, r.image);
             util::writePng((dir / finalFile).string(), r.image);
             util::writePng((dir / reflFile).string(), reflectionDisplayImage(reflection, exposure));

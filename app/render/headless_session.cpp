@@ -1,6 +1,10 @@
 #include "render/headless_session.hpp"
 
+#include "scene/camera_path.hpp"
 #include "util/output_files.hpp"
+
+#include <fstream>
+#include <sstream>
 
 #include <cstdio>
 #include <stdexcept>
@@ -11,6 +15,14 @@ HeadlessSession::HeadlessSession(const Options& o) : options(o) {
     util::prepareOutputDirectory(o.out, "--out " + o.out);  // before minutes of rendering, not after
     scene = loadScene(o);
     cameras = resolveCameras(scene, o.camera);
+    if (!o.path.empty() && !scene::isNamedCameraPath(o.path)) {
+        std::ifstream in(o.path, std::ios::binary);
+        if (!in) throw std::runtime_error("--path " + o.path + ": cannot read the file (or a path name: still, strafe, dolly, orbit)");
+        std::ostringstream text;
+        text << in.rdbuf();
+        pathFile = scene::parseCameraPath(text.str(), o.path);
+        cameras = {{"path", pathFile.front()}};
+    }
     vk::ContextOptions co;
     co.validation = o.validation;
     ctx = vk::Context::create(co);
@@ -33,7 +45,12 @@ HeadlessSession::HeadlessSession(const Options& o) : options(o) {
     if (compare)
         if (const std::string why = renderer->unsupported(o.reference, extent); !why.empty())
             throw std::runtime_error("--reference " + o.reference + ": " + why);
-    frames = o.frames ? o.frames : 5;
+    frames = o.frames ? o.frames : o.path.empty() ? 5 : kDefaultPathFrames;
+}
+
+std::vector<scene::CameraPose> HeadlessSession::path(const ResolvedCamera& camera) const {
+    if (!pathFile.empty()) return pathFile;
+    return scene::namedCameraPath(options.path, camera.pose, frames);
 }
 
 std::filesystem::path HeadlessSession::cameraDir(const std::string& camera) const {

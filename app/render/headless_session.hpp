@@ -17,6 +17,8 @@ struct HeadlessSession {
     // One camera: files go straight into --out; several: one sub-folder per camera (created here).
     std::filesystem::path cameraDir(const std::string& camera) const;
     bool singleCamera() const { return cameras.size() == 1; }
+    // --path: the poses from this camera, one per frame (a path file's own poses whatever the camera).
+    std::vector<scene::CameraPose> path(const ResolvedCamera& camera) const;
     // 1 (with a message) when validation reported errors, else 0 after printing where the files are.
     int finish() const;
 
@@ -29,6 +31,7 @@ struct HeadlessSession {
     std::unique_ptr<HeadlessRenderer> headless;
     VkExtent2D extent{};
     uint32_t frames = 5;
+    std::vector<scene::CameraPose> pathFile;  // --path FILE's poses (cameras is then one, named "path")
 };
 
 }  // namespace ppr::app

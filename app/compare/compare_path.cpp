@@ -1,0 +1,134 @@
+// `ppr compare --path`: TAA and the techniques under camera motion. Per frame of the path the
+// reference technique is rendered 16 times with Halton jitter and the images averaged (the
+// supersampled reference, TAA off), and once more unjittered for its reflector pixels. Then each
+// --technique row renders the whole path as one shot (its TAA history carries from frame to frame)
+// and every frame is scored against that frame's reference.
+#include "compare/compare.hpp"
+
+#include "bench/bench_plot.hpp"
+#include "capture/report.hpp"
+#include "metrics/compare_metrics.hpp"
+#include "metrics/temporal_metrics.hpp"
+#include "render/headless_session.hpp"
+#include "scene/camera_path.hpp"
+#include "util/output_files.hpp"
+
+#include <cstdio>
+#include <sstream>
+
+namespace ppr::app {
+namespace {
+
+struct ReferenceFrame {
+    util::Rgba8Image supersampled;
+    FloatImage reflectorPixels;  // allReflectorPixels of the reference's reflection: the reflector mask
+};
+
+std::string frameFile(const std::string& folder, size_t frame) {
+    char name[32];
+    std::snprintf(name, sizeof name, "/frame_%03zu.png", frame);
+    return folder + name;
+}
+
+}  // namespace
+
+int runComparePath(const Options& o) {
+    HeadlessSession session(o);
+    const vk::Context& ctx = *session.ctx;
+    HeadlessRenderer& headless = *session.headless;
+    const VkExtent2D extent = session.extent;
+    nlohmann::json summary;
+    summary["cameras"] = nlohmann::json::object();
+    for (const ResolvedCamera& cam : session.cameras) {
+        const std::filesystem::path dir = session.cameraDir(cam.name);
+        const uint32_t errorsBefore = ctx.validationErrors();
+        const std::vector<scene::CameraPose> poses = session.path(cam);
+        const bool still = scene::isStill(poses);
+
+        std::vector<ReferenceFrame> reference(poses.size());
+        {
+            const Settings shared = headless.settings();
+            headless.setTechnique(o.reference);
+            headless.settings().set("taa", "0");
+            for (size_t i = 0; i < poses.size(); ++i) {
+                reference[i].supersampled = headless.captureSupersampled(poses[i], extent, scene::kJitterLength);
+                reference[i].reflectorPixels = allReflectorPixels(headless.capture(poses[i], extent, 1, false, true).reflection);
+            }
+            headless.settings() = shared;
+        }
+        util::prepareOutputDirectory(dir / "reference", "--out " + o.out);
+        util::writePng(frameFile((dir / "reference").string(), poses.size() - 1), reference.back().supersampled);
+
+        nlohmann::json metrics;
+        metrics["camera"] = cam.name;
+        metrics["path"] = o.path;
+        metrics["size"] = {extent.width, extent.height};
+        metrics["device"] = ctx.info().name;
+        metrics["settings"] = headless.settings().all();
+        metrics["frames"] = poses.size();
+        metrics["still"] = still;
+        metrics["reference"] = o.reference;
+        metrics["reference_samples"] = scene::kJitterLength;
+        metrics["techniques"] = nlohmann::json::object();
+        std::ostringstream csv;
+        csv << "technique,frame,x,y,z,yaw_deg,pitch_deg,psnr_db,reflector_psnr_db,change,frame_gpu_ms\n";
+        PlotSpec whole{"whole frame vs " + std::to_string(scene::kJitterLength) + "x supersampled " + o.reference, "frame", "PSNR (dB)"};
+        PlotSpec reflectors{"reflector pixels", "frame", "PSNR (dB)"};
+        for (const std::string& t : o.techniques) {
+            const Settings shared = headless.setVariant(t);
+            const std::string folder = (dir / ("frames_" + variantFileName(t))).string();
+            util::prepareOutputDirectory(folder, "--out " + o.out);
+            std::vector<TemporalFrame> frames;
+            std::vector<double> frameMs;
+            util::Rgba8Image previous;
+            PlotSeries wholeSeries{t, {}, {}}, reflectorSeries{t, {}, {}};
+            for (size_t i = 0; i < poses.size(); ++i) {
+                const CaptureResult r = headless.capture(poses[i], extent, 1, false, false, i == 0);
+                TemporalFrame f;
+                f.psnrDb = imagePsnrDb(r.image, reference[i].supersampled);
+                f.reflectorPsnrDb = compositedPsnrDb(r.image, reference[i].supersampled, reference[i].reflectorPixels);
+                f.change = i ? meanAbsoluteChange(r.image, previous) : 0.0;
+                frames.push_back(f);
+                frameMs.push_back(r.totalMedianMs);
+                util::writePng(frameFile(folder, i), r.image);
+                const scene::CameraPose& p = poses[i];
+                csv << t << ',' << i << ',' << p.position.x << ',' << p.position.y << ',' << p.position.z << ',' << p.yawDeg << ','
+                    << p.pitchDeg << ',' << f.psnrDb << ',' << f.reflectorPsnrDb << ',' << f.change << ',' << r.totalMedianMs << '\n';
+                wholeSeries.x.push_back(double(i));
+                wholeSeries.y.push_back(std::min(f.psnrDb, 60.0));
+                reflectorSeries.x.push_back(double(i));
+                reflectorSeries.y.push_back(std::min(f.reflectorPsnrDb, 60.0));
+                previous = r.image;
+            }
+            headless.settings() = shared;
+            const TemporalSummary s = summarizeTemporal(frames, still, scene::kJitterLength);
+            const nlohmann::json temporal = {{"psnr_db_mean", s.psnrDbMean},
+                                             {"reflector_psnr_db_mean", s.reflectorPsnrDbMean},
+                                             {"flicker", s.flicker ? nlohmann::json(*s.flicker) : nlohmann::json(nullptr)},
+                                             {"frames", s.frames}};
+            metrics["techniques"][t] = {{"temporal", temporal}, {"frame_gpu_ms", median(frameMs)}, {"frames_dir", "frames_" + variantFileName(t)}};
+            if (still) metrics["techniques"][t]["flicker_from_frame"] = s.settledFrom;
+            summary["cameras"][cam.name][t] = {{"temporal", temporal}};
+            whole.series.push_back(wholeSeries);
+            reflectors.series.push_back(reflectorSeries);
+            std::printf("ppr: %-8s %-14s %s, %u frames: PSNR %6.2f dB mean, reflector pixels %6.2f dB mean", cam.name.c_str(), t.c_str(),
+                        o.path.c_str(), s.frames, s.psnrDbMean, s.reflectorPsnrDbMean);
+            if (s.flicker) std::printf(", flicker %.3f levels", *s.flicker);
+            std::printf("\n");
+        }
+        util::writeTextFile(dir / "temporal.csv", csv.str());
+        util::writePng((dir / "temporal.png").string(), sideBySide({renderPlot(whole, 640, 400), renderPlot(reflectors, 640, 400)}));
+        metrics["images"] = {{"plot", "temporal.png"}, {"csv", "temporal.csv"}, {"reference_last_frame", "reference/" + frameFile("", poses.size() - 1).substr(1)}};
+        metrics["validation"] = ctx.validationEnabled();
+        metrics["validation_errors"] = ctx.validationErrors() - errorsBefore;
+        writeJsonFile((dir / "metrics.json").string(), metrics);
+        std::printf("ppr: %-8s -> %s\n", cam.name.c_str(), (dir / "temporal.png").c_str());
+    }
+    if (!session.singleCamera()) {
+        summary["validation_errors"] = ctx.validationErrors();
+        writeJsonFile((std::filesystem::path(o.out) / "metrics.json").string(), summary);
+    }
+    return session.finish();
+}
+
+}  // namespace ppr::app

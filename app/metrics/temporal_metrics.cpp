@@ -1,0 +1,40 @@
+#include "metrics/temporal_metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace ppr::app {
+
+double meanAbsoluteChange(const util::Rgba8Image& a, const util::Rgba8Image& b) {
+    const size_t n = size_t(a.width) * a.height;
+    if (a.width != b.width || a.height != b.height || a.pixels.size() != n * 4 || b.pixels.size() != n * 4)
+        throw std::invalid_argument("meanAbsoluteChange: images of " + std::to_string(a.width) + "x" + std::to_string(a.height) + " and " +
+                                    std::to_string(b.width) + "x" + std::to_string(b.height));
+    double sum = 0.0;
+    for (size_t i = 0; i < n; ++i)
+        for (int c = 0; c < 3; ++c) sum += std::abs(double(a.pixels[i * 4 + c]) - double(b.pixels[i * 4 + c]));
+    return n ? sum / (3.0 * double(n)) : 0.0;
+}
+
+TemporalSummary summarizeTemporal(const std::vector<TemporalFrame>& frames, bool still, uint32_t convergenceFrames) {
+    if (frames.empty()) throw std::invalid_argument("summarizeTemporal: no frames");
+    TemporalSummary s;
+    s.frames = static_cast<uint32_t>(frames.size());
+    for (const TemporalFrame& f : frames) {
+        s.psnrDbMean += f.psnrDb / double(frames.size());
+        s.reflectorPsnrDbMean += f.reflectorPsnrDb / double(frames.size());
+    }
+    if (still) {
+        // Frame 0 has no previous frame: a single frame has nothing to flicker with.
+        s.settledFrom = std::max(1u, std::min(convergenceFrames, s.frames / 2));
+        double sum = 0.0;
+        uint32_t counted = 0;
+        for (uint32_t i = s.settledFrom; i < s.frames; ++i, ++counted) sum += frames[i].change;
+        s.flicker = counted ? sum / counted : 0.0;
+    }
+    return s;
+}
+
+}  // namespace ppr::app

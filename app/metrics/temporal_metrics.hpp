@@ -1,0 +1,35 @@
+#pragma once
+// Scores of a camera path run (compare --path, docs/temporal.md): per frame PSNR against the
+// supersampled reference, over the whole frame and over reflector pixels, and the frame-to-frame
+// change that is flicker when the camera stands still.
+#include "util/image_io.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace ppr::app {
+
+// Mean absolute difference of the rgb channels of two display images, in 8-bit levels (0..255).
+// Throws std::invalid_argument when the sizes differ.
+double meanAbsoluteChange(const util::Rgba8Image& a, const util::Rgba8Image& b);
+
+struct TemporalFrame {
+    double psnrDb = 0.0;           // whole frame, against the supersampled reference
+    double reflectorPsnrDb = 0.0;  // reflector pixels only
+    double change = 0.0;           // meanAbsoluteChange from the previous frame (0 on the first)
+};
+
+struct TemporalSummary {
+    double psnrDbMean = 0.0, reflectorPsnrDbMean = 0.0;
+    std::optional<double> flicker;  // still camera only: the mean change after convergence
+    uint32_t frames = 0;
+    uint32_t settledFrom = 0;       // first frame flicker counts (still camera)
+};
+
+// The means over every frame; with `still`, flicker is the mean change over the frames from
+// min(convergenceFrames, frames / 2) on — the history has taken in a whole jitter cycle by then.
+// Throws std::invalid_argument for no frames.
+TemporalSummary summarizeTemporal(const std::vector<TemporalFrame>& frames, bool still, uint32_t convergenceFrames);
+
+}  // namespace ppr::app

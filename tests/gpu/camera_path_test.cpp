@@ -1,0 +1,84 @@
+// `--path` through the ppr executable: compare scores every frame of a path against the supersampled
+// reference (metrics.json's "temporal" block, temporal.csv, temporal.png), capture writes every frame,
+// and a bad path file is one line naming the file and line.
+#include "gpu_test_util.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+
+namespace ppr::test {
+namespace {
+
+nlohmann::json readJson(const std::filesystem::path& p) {
+    std::ifstream f(p);
+    return nlohmann::json::parse(f);
+}
+
+size_t lineCount(const std::filesystem::path& p) {
+    std::ifstream f(p);
+    size_t n = 0;
+    for (std::string line; std::getline(f, line);) ++n;
+    return n;
+}
+
+TEST(CameraPathRun, CompareScoresEveryFrameOfAStrafe) {
+    auto dir = tempDir("path-compare");
+    RunResult r = runPpr("compare --validation --path strafe --frames 4 --camera puddles --size 160x90 --technique ppr --technique ppr@taa=1 --out " +
+                         dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const nlohmann::json m = readJson(dir / "metrics.json");
+    EXPECT_EQ(m["validation_errors"], 0);
+    EXPECT_EQ(m["path"], "strafe");
+    EXPECT_EQ(m["frames"], 4);
+    EXPECT_EQ(m["still"], false);
+    for (const char* t : {"ppr", "ppr@taa=1"}) {
+        const nlohmann::json& temporal = m["techniques"][t]["temporal"];
+        for (const char* key : {"psnr_db_mean", "reflector_psnr_db_mean", "flicker", "frames"}) EXPECT_TRUE(temporal.contains(key)) << t << key;
+        EXPECT_EQ(temporal["frames"], 4);
+        EXPECT_TRUE(temporal["flicker"].is_null()) << "flicker is measured on a still camera only";
+        EXPECT_GT(temporal["psnr_db_mean"].get<double>(), 15.0) << t;
+        EXPECT_TRUE(std::filesystem::exists(dir / m["techniques"][t]["frames_dir"].get<std::string>() / "frame_003.png")) << t;
+    }
+    EXPECT_EQ(lineCount(dir / "temporal.csv"), 1u + 2u * 4u);
+    EXPECT_TRUE(std::filesystem::exists(dir / "temporal.png"));
+    std::filesystem::remove_all(dir);
+}
+
+TEST(CameraPathRun, StillPathMeasuresFlicker) {
+    auto dir = tempDir("path-still");
+    RunResult r = runPpr("compare --path still --frames 4 --camera overview --size 96x54 --technique planar --out " + dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const nlohmann::json m = readJson(dir / "metrics.json");
+    EXPECT_EQ(m["still"], true);
+    // Without TAA a still camera renders the same frame again: no flicker at all.
+    EXPECT_EQ(m["techniques"]["planar"]["temporal"]["flicker"], 0.0);
+    std::filesystem::remove_all(dir);
+}
+
+TEST(CameraPathRun, CaptureAlongAPathFileAndItsErrors) {
+    auto dir = tempDir("path-capture");
+    const std::filesystem::path file = dir / "walk.txt";
+    std::ofstream(file) << "# two poses\n0,1.6,4,0,-10\n0.1,1.6,4,0,-10,50\n";
+    RunResult r = runPpr("capture --set taa=1 --path " + file.string() + " --size 96x54 --out " + (dir / "out").string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const nlohmann::json report = readJson(dir / "out" / "report.json");
+    EXPECT_EQ(report["frames"], 2);
+    EXPECT_TRUE(std::filesystem::exists(dir / "out" / "frames" / "frame_001.png"));
+    EXPECT_EQ(lineCount(dir / "out" / "frames.csv"), 3u);
+
+    std::ofstream(file) << "0,1.6,4,0,-10\nhall\n";
+    r = runPpr("capture --path " + file.string() + " --size 96x54 --out " + (dir / "bad").string());
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.output.find("walk.txt:2: expected x,y,z"), std::string::npos) << r.output;
+    r = runPpr("capture --path " + (dir / "missing.txt").string() + " --size 96x54 --out " + (dir / "bad").string());
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.output.find("missing.txt: cannot read"), std::string::npos) << r.output;
+    r = runPpr("bench --path strafe --out " + (dir / "bad").string());
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.output.find("only capture and compare"), std::string::npos) << r.output;
+    std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace ppr::test

@@ -1,0 +1,51 @@
+// Camera-path scores: frame-to-frame change, the means and flicker after convergence.
+#include "metrics/temporal_metrics.hpp"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+using namespace ppr::app;
+
+namespace {
+
+ppr::util::Rgba8Image flat(uint8_t value, uint8_t alpha = 255) {
+    ppr::util::Rgba8Image img;
+    img.width = 3;
+    img.height = 2;
+    img.pixels.assign(3 * 2 * 4, value);
+    for (size_t i = 3; i < img.pixels.size(); i += 4) img.pixels[i] = alpha;
+    return img;
+}
+
+TEST(TemporalMetrics, ChangeIsTheMeanAbsoluteRgbDifferenceInLevels) {
+    EXPECT_EQ(meanAbsoluteChange(flat(10), flat(10, 0)), 0.0);  // alpha is not a colour
+    EXPECT_DOUBLE_EQ(meanAbsoluteChange(flat(10), flat(14)), 4.0);
+    EXPECT_DOUBLE_EQ(meanAbsoluteChange(flat(14), flat(10)), 4.0);
+    ppr::util::Rgba8Image one = flat(0);
+    one.pixels[0] = 60;  // one channel of one pixel of six: 60 / 18
+    EXPECT_DOUBLE_EQ(meanAbsoluteChange(flat(0), one), 60.0 / 18.0);
+    ppr::util::Rgba8Image wide = flat(0);
+    wide.width = 6;
+    wide.height = 1;
+    EXPECT_THROW(meanAbsoluteChange(flat(0), wide), std::invalid_argument);
+}
+
+TEST(TemporalMetrics, MeansOverEveryFrameFlickerOnlyWhenStillAndSettled) {
+    std::vector<TemporalFrame> frames;
+    for (int i = 0; i < 40; ++i) frames.push_back({30.0 + i % 2, 20.0, i < 16 ? 9.0 : 1.0});
+    const TemporalSummary moving = summarizeTemporal(frames, false, 16);
+    EXPECT_DOUBLE_EQ(moving.psnrDbMean, 30.5);
+    EXPECT_DOUBLE_EQ(moving.reflectorPsnrDbMean, 20.0);
+    EXPECT_FALSE(moving.flicker.has_value());
+    EXPECT_EQ(moving.frames, 40u);
+    const TemporalSummary still = summarizeTemporal(frames, true, 16);
+    EXPECT_EQ(still.settledFrom, 16u);
+    EXPECT_DOUBLE_EQ(*still.flicker, 1.0);  // the first 16 frames' large changes are convergence
+    // A short run settles at half its length; one frame has nothing to compare with.
+    EXPECT_EQ(summarizeTemporal(std::vector<TemporalFrame>(10), true, 16).settledFrom, 5u);
+    EXPECT_EQ(*summarizeTemporal(std::vector<TemporalFrame>(1), true, 16).flicker, 0.0);
+    EXPECT_THROW(summarizeTemporal({}, true, 16), std::invalid_argument);
+}
+
+}  // namespace
