@@ -92,7 +92,7 @@ int runComparePath(const Options& o) {
                 frameMs.push_back(r.totalMedianMs);
                 util::writePng(frameFile(folder, i), r.image);
                 const scene::CameraPose& p = poses[i];
-                csv << t << ',' << i << ',' << p.position.x << ',' << p.position.y << ',' << p.position.z << ',' << p.yawDeg << ','
+                csv << '"' << t << "\"," << i << ',' << p.position.x << ',' << p.position.y << ',' << p.position.z << ',' << p.yawDeg << ','
                     << p.pitchDeg << ',' << f.psnrDb << ',' << f.reflectorPsnrDb << ',' << f.change << ',' << r.totalMedianMs << '\n';
                 wholeSeries.x.push_back(double(i));
                 wholeSeries.y.push_back(std::min(f.psnrDb, 60.0));

@@ -21,6 +21,11 @@ struct TechniqueReflection {  // the technique's reflection image (common/reflec
 struct ReflectedPath {  // planar only: per pixel, the reflected path length and its classes (planar/planar.h)
     graph::ImageHandle image;
 };
+// Per pixel the length of the reflected path, eye → reflector → reflected point (metres; 0 = unknown),
+// R32F or the x of planar's RG32F: TAA's reflection history finds the virtual point with it.
+struct ReflectionDistance {
+    graph::ImageHandle image;
+};
 struct ShownReflection {  // what the composite blends: the technique's, or A/B's split of it
     graph::ImageHandle image;
 };

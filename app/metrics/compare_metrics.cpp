@@ -139,17 +139,20 @@ double compositedPsnrDb(const util::Rgba8Image& technique, const util::Rgba8Imag
     return mse > 0.0 ? std::min(kPsnrCapDb, 10.0 * std::log10(1.0 / mse)) : kPsnrCapDb;
 }
 
-double imagePsnrDb(const util::Rgba8Image& a, const util::Rgba8Image& b) {
+double sumOverRgbDifferences(const util::Rgba8Image& a, const util::Rgba8Image& b, const char* what, double (*f)(double)) {
     const size_t n = size_t(a.width) * a.height;
     if (a.width != b.width || a.height != b.height || a.pixels.size() != n * 4 || b.pixels.size() != n * 4)
-        throw std::invalid_argument("imagePsnrDb: images of " + std::to_string(a.width) + "x" + std::to_string(a.height) + " and " +
+        throw std::invalid_argument(std::string(what) + ": images of " + std::to_string(a.width) + "x" + std::to_string(a.height) + " and " +
                                     std::to_string(b.width) + "x" + std::to_string(b.height));
-    double sumSq = 0.0;
+    double sum = 0.0;
     for (size_t i = 0; i < n; ++i)
-        for (int c = 0; c < 3; ++c) {
-            const double d = (double(a.pixels[i * 4 + c]) - double(b.pixels[i * 4 + c])) / 255.0;
-            sumSq += d * d;
-        }
+        for (int c = 0; c < 3; ++c) sum += f(double(a.pixels[i * 4 + c]) - double(b.pixels[i * 4 + c]));
+    return sum;
+}
+
+double imagePsnrDb(const util::Rgba8Image& a, const util::Rgba8Image& b) {
+    const double sumSq = sumOverRgbDifferences(a, b, "imagePsnrDb", [](double d) { return d * d; }) / (255.0 * 255.0);
+    const size_t n = size_t(a.width) * a.height;
     const double mse = n ? sumSq / (3.0 * double(n)) : 0.0;
     return mse > 0.0 ? std::min(kPsnrCapDb, 10.0 * std::log10(1.0 / mse)) : kPsnrCapDb;
 }

@@ -75,6 +75,10 @@ ReflectionScore scoreReflection(const FloatImage& technique, const FloatImage& r
 double compositedPsnrDb(const util::Rgba8Image& technique, const util::Rgba8Image& reference, const FloatImage& referenceReflection,
                         const PixelRect* region = nullptr);
 
+// The sum over every pixel's r, g and b of f(a − b), the difference in 8-bit levels (alpha is not a
+// colour). Throws std::invalid_argument naming `what` when the sizes differ.
+double sumOverRgbDifferences(const util::Rgba8Image& a, const util::Rgba8Image& b, const char* what, double (*f)(double));
+
 // PSNR of two whole display images (rgb, 8-bit, peak 255), capped at kPsnrCapDb: TAA against its
 // supersampled reference. Throws std::invalid_argument when the sizes differ.
 double imagePsnrDb(const util::Rgba8Image& a, const util::Rgba8Image& b);

@@ -1,5 +1,7 @@
 #include "metrics/temporal_metrics.hpp"
 
+#include "metrics/compare_metrics.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -8,13 +10,8 @@
 namespace ppr::app {
 
 double meanAbsoluteChange(const util::Rgba8Image& a, const util::Rgba8Image& b) {
+    const double sum = sumOverRgbDifferences(a, b, "meanAbsoluteChange", [](double d) { return std::abs(d); });
     const size_t n = size_t(a.width) * a.height;
-    if (a.width != b.width || a.height != b.height || a.pixels.size() != n * 4 || b.pixels.size() != n * 4)
-        throw std::invalid_argument("meanAbsoluteChange: images of " + std::to_string(a.width) + "x" + std::to_string(a.height) + " and " +
-                                    std::to_string(b.width) + "x" + std::to_string(b.height));
-    double sum = 0.0;
-    for (size_t i = 0; i < n; ++i)
-        for (int c = 0; c < 3; ++c) sum += std::abs(double(a.pixels[i * 4 + c]) - double(b.pixels[i * 4 + c]));
     return n ? sum / (3.0 * double(n)) : 0.0;
 }
 

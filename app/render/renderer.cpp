@@ -1,5 +1,6 @@
 #include "render/renderer.hpp"
 
+#include "taa/taa.h"
 #include "techniques/technique_table.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -8,6 +9,19 @@
 
 namespace ppr::app {
 namespace {
+
+passes::TaaReflectionInputs taaReflectionInputs(const graph::Blackboard& board, graph::ImageHandle reflection, const passes::GBuffer& gb,
+                                                const FrameSettings& settings) {
+    passes::TaaReflectionInputs r;
+    r.reflection = reflection;
+    if (const ReflectionDistance* d = board.find<ReflectionDistance>()) r.distance = d->image;
+    r.depth = gb.depth;
+    r.normal = gb.normal;
+    static_assert(uint32_t(Reproject::Surface) == gpu::kReprojectSurface && uint32_t(Reproject::Candidates) == gpu::kReprojectCandidates &&
+                  uint32_t(Reproject::Virtual) == gpu::kReprojectVirtual);
+    r.mode = static_cast<uint32_t>(settings.taa.reproject);
+    return r;
+}
 
 // Orthographic light projection fitted around the scene's bounding sphere, reverse-Z (near = 1).
 glm::mat4 lightViewProjection(const scene::Scene& s, const glm::vec3& lightDir) {
@@ -95,10 +109,15 @@ void Renderer::resetTaaHistory(const FrameRequest& req) {
     graph::HistoryStore& history = executor_->history();
     const bool changed = !lastTechnique_.empty() && lastTechnique_ != req.technique;
     lastTechnique_ = req.technique;
-    if (!history.contains(passes::TaaPass::kHistoryName)) return;
+    // A new shot starts the jitter sequence again: the same shot renders the same frames, whichever
+    // shots came before (compare's rows stay comparable frame by frame).
+    if (req.cameraCut) taaFrames_ = 0;
     // A resize needs nothing here: the store reallocates and resets a pair whose size changed.
-    if (changed) history.reset(passes::TaaPass::kHistoryName, "technique change");
-    if (req.cameraCut) history.reset(passes::TaaPass::kHistoryName, "camera cut");
+    for (const char* name : {passes::TaaPass::kHistoryName, passes::TaaPass::kReflectionHistoryName}) {
+        if (!history.contains(name)) continue;
+        if (changed) history.reset(name, "technique change");
+        if (req.cameraCut) history.reset(name, "camera cut");
+    }
 }
 
 void Renderer::runTaps(const FrameRequest& req, TapPoint point, TapContext& ctx) {
@@ -139,6 +158,7 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
         if (std::optional<graph::ImageHandle> reflection = technique->addReflection(frame)) {
             board.put(TechniqueReflection{*reflection});
             board.put(ShownReflection{*reflection});
+            if (taa) board.put(ShownReflection{taa_->addReflection(g, in, executor_->history(), taaReflectionInputs(board, *reflection, gb, settings))});
         }
     }
     std::optional<graph::ImageHandle> reference;

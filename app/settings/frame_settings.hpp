@@ -41,8 +41,11 @@ struct GlassSettings {       // owner: glass (PPR's glass atlas and the planar r
     uint32_t atlas;          // texels per side
 };
 
+enum class Reproject : uint32_t { Surface, Candidates, Virtual };  // values = taa.h kReproject*
+
 struct TaaSettings {         // owner: taa (passes/taa)
     bool enabled;            // jitter + temporal resolve of the HDR frame (off while a debug view is shown)
+    Reproject reproject;     // how the reflection's own history is fetched
 };
 
 struct FrameSettings {

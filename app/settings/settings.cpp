@@ -155,6 +155,12 @@ const std::vector<SettingDecl>& settingDecls() {
         toggle("taa", "taa", [](FrameSettings& s) -> bool& { return s.taa.enabled; }, false,
                "temporal anti-aliasing: Halton (2, 3) jitter of 16 samples, history reprojected by depth and the previous "
                "view-projection, YCoCg variance clipping, Catmull-Rom history sample (0: off, bit-identical frames)"),
+        choice<Reproject>("reproject", "taa", [](FrameSettings& s) -> Reproject& { return s.taa.reproject; }, {"surface", "candidates", "virtual"},
+                          "virtual",
+                          "taa=1: the reflection's own history, fetched by the surface's motion (a plain TAA), the smallest of the "
+                          "surface's and the reflected point's motion with their parallax-scaled forms (candidates), or the virtual "
+                          "point's motion with disocclusion rejected by its depth (virtual; ppr and planar give path lengths, the "
+                          "other techniques fall back to the surface's motion)"),
         number("exposure", "frame", [](FrameSettings& s) -> float& { return s.view.exposure; }, 1, 0.01, 100.0, "exposure multiplier before tonemapping"),
         integer("shadowres", "frame", [](FrameSettings& s) -> uint32_t& { return s.view.shadowRes; }, 2048, 256, 8192,
                 "shadow map resolution (texels per side)"),

@@ -21,6 +21,7 @@ std::optional<graph::ImageHandle> PlanarTechnique::addReflection(TechniqueFrame&
     if (!bound) {
         const passes::PlanarOutputs out = pass_.add(f.graph, f.in, f.gbuffer, f.shadowMap, views, reflectors(f));
         f.board.put(ReflectedPath{out.path});
+        f.board.put(ReflectionDistance{out.path});
         return out.reflection;
     }
     passes::PlanarGlass glass;
@@ -36,6 +37,7 @@ std::optional<graph::ImageHandle> PlanarTechnique::addReflection(TechniqueFrame&
     const passes::PlanarOutputs out = pass_.add(f.graph, f.in, f.gbuffer, f.shadowMap, views, reflectors(f), &glass);
     f.board.put(passes::GlassReflection{out.glass, bound->buffers.table});
     f.board.put(ReflectedPath{out.path});
+    f.board.put(ReflectionDistance{out.path});
     return out.reflection;
 }
 

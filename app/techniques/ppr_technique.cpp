@@ -96,7 +96,12 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
     reflect.maxReflectorId = projected;
     reflect.flags = reflectFlags(f.settings);
     reflect.environment = f.environment();
-    graph::ImageHandle reflection = reflect_.add(f.graph, f.in, reflect);
+    // TAA's reflection history reprojects through the virtual point, which needs each pixel's path length.
+    const bool taa = f.settings.taa.enabled && f.settings.view.debug == gpu::kDebugNone;
+    if (taa) reflect.distance = f.graph.createImage("ppr.distance", {f.in.extent.width, f.in.extent.height, VK_FORMAT_R32_SFLOAT, 1});
+    graph::ImageHandle distance;
+    graph::ImageHandle reflection = reflect_.add(f.graph, f.in, reflect, &distance);
+    if (taa) f.board.put(ReflectionDistance{distance});
     // The debug views PPR draws over the whole screen are left as they are.
     const uint32_t debug = reflect.debugView;
     const bool pprDebugView = debug == gpu::kDebugIntermediate || debug == gpu::kDebugHoles || debug == gpu::kDebugTiles;

@@ -25,6 +25,16 @@ layout(set = 0, binding = 9) uniform sampler2D normalTex;  // G-buffer normal (n
 layout(set = 0, binding = 10, scalar) readonly buffer Reflectors { ReflectorData reflectors[]; };
 layout(push_constant, scalar) uniform Push { PprReflectPush pc; };
 #define ENV_BINDING 11  // the probe's data and cube (11, 12)
+layout(set = 0, binding = 13, r32f) uniform writeonly image2D outDistance;  // kPprWriteDistance
+
+// TAA's reflection history: the length of the path eye → this pixel's surface → the reflected point
+// seen at screen position `seen` (pixels).
+void storeDistance(ivec2 pix, vec2 seen) {
+    ivec2 seenPix = clamp(ivec2(seen), ivec2(0), ivec2(frame.screenSize) - 1);
+    vec3 surface = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, texelFetch(depthTex, pix, 0).r);
+    vec3 reflected = worldFromDepth((vec2(seenPix) + 0.5) * frame.invScreenSize, texelFetch(depthTex, seenPix, 0).r);
+    imageStore(outDistance, pix, vec4(length(surface - frame.cameraPos.xyz) + length(reflected - surface)));
+}
 
 uint fetchValue(ivec2 p) {
     if (any(lessThan(p, ivec2(0))) || any(greaterThanEqual(p, ivec2(frame.screenSize)))) return kPprClearValue;
@@ -111,6 +121,7 @@ void main() {
     }
 
     PprResolved r = pprResolve(pix, vec2(pix) + 0.5, 1.0, pc.flags);
+    if ((pc.flags & kPprWriteDistance) != 0u && r.valid && pc.debugView == kDebugNone) storeDistance(pix, r.source);
     if (pc.debugView == kDebugHoles) {
         vec3 c = !r.valid ? vec3(1.0, 0.0, 0.0) : r.readTexel == pix ? vec3(0.0, 0.8, 0.0) : vec3(1.0, 0.85, 0.0);
         imageStore(outReflection, pix, vec4(c, 1.0));
@@ -143,5 +154,7 @@ void main() {
         seen = hit;
     }
     if ((pc.flags & kPprEnvironment) != 0u) color = environmentBlend(color, seen, surface, dir);
+    // The normal-mapped hit moved the reflected point: its path replaces the flat one stored above.
+    if ((pc.flags & kPprWriteDistance) != 0u && seen != r.source) storeDistance(pix, seen);
     imageStore(outReflection, pix, vec4(color, r.readTexel == pix ? kReflectionHit : kReflectionFilled));
 }

@@ -18,6 +18,8 @@ PPR_CONST(uint, kPprEnvironment, 64u)
 PPR_CONST(uint, kPprEnvironmentProbe, 128u)
 // holes=1: the depth-aware hole rule (ppr_resolve.glsl); kPprHoleFilling alone is holes=slides.
 PPR_CONST(uint, kPprHoleEnclosed, 256u)
+// TAA's reflection history: also write the reflected path length per pixel (outDistance).
+PPR_CONST(uint, kPprWriteDistance, 512u)
 // How far (texels) the depth-aware rule looks on each side for the enclosing nearer layer.
 PPR_CONST(int, kPprHoleReach, 2)
 // Taps of the normalmap=raymarch march between the pixel and the approximated reflection.

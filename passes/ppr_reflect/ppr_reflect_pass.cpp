@@ -16,7 +16,8 @@ PprReflectPass::PprReflectPass(const vk::Context& ctx) : ctx_(ctx) {
     pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(ppr_reflect_comp), layout, "ppr.reflect");
 }
 
-graph::ImageHandle PprReflectPass::add(graph::RenderGraph& g, const FrameInputs& in, const PprReflectInputs& inputs) const {
+graph::ImageHandle PprReflectPass::add(graph::RenderGraph& g, const FrameInputs& in, const PprReflectInputs& inputs,
+                                       graph::ImageHandle* distanceOut) const {
     gpu::PprReflectPush push{};
     push.flags = inputs.flags;
     push.debugView = inputs.debugView;
@@ -47,10 +48,18 @@ graph::ImageHandle PprReflectPass::add(graph::RenderGraph& g, const FrameInputs&
         .sampled(inputs.normal, in.samplers->nearestClamp)
         .hostStorage(inputs.reflectors)
         .uniform(inputs.environment.probeData, 0, sizeof(gpu::EnvProbeData))
-        .sampled(inputs.environment.probeCube, in.samplers->linearClamp)
-        .push(push);
+        .sampled(inputs.environment.probeCube, in.samplers->linearClamp);
+    // Without kPprWriteDistance the shader never touches binding 13: a 1x1 stand-in keeps it bound.
+    const bool writeDistance = inputs.distance.has_value();
+    if (writeDistance) push.flags |= gpu::kPprWriteDistance;
+    graph::ImageHandle distanceWritten;
+    // Cleared first and kept where the shader does not write (tiles outside the indirect dispatch).
+    if (writeDistance) pass.storageReadWrite(addClearPass(g, "ppr.distance.clear", *inputs.distance, VkClearColorValue{}), &distanceWritten);
+    else pass.storageWrite(g.createImage("ppr.distance.unused", {1, 1, VK_FORMAT_R32_SFLOAT, 1}), &distanceWritten);
+    pass.push(push);
     if (indirect) pass.dispatchIndirect(inputs.tiles->args, sizeof(gpu::TileDispatchArgs) * gpu::kTileClassPlanar);
     else pass.dispatch(in.extent, gpu::kPprTileSize);
+    if (distanceOut) *distanceOut = distanceWritten;  // set by dispatch
     return out;
 }
 

@@ -3,6 +3,8 @@
 #include "common/environment.hpp"
 #include "common/frame_inputs.hpp"
 #include "graph/graph.hpp"
+
+#include <optional>
 #include "tile_classify/tile_classify_pass.hpp"
 
 namespace ppr::passes {
@@ -19,6 +21,9 @@ struct PprReflectInputs {
     uint32_t debugView = 0;       // frame.h kDebug* (intermediate, holes and tiles draw here)
     uint32_t maxReflectorId = 0;  // ids above this get no reflection (beyond PPR's budget)
     Environment environment;      // what holes show with kPprEnvironment (the probe adds kPprEnvironmentProbe)
+    // kPprWriteDistance: the image (R32F, screen-sized, cleared to 0 by add()) that receives the length
+    // of each reflector pixel's reflected path; add() returns it written in `distanceOut`.
+    std::optional<graph::ImageHandle> distance;
 };
 
 class PprReflectPass {
@@ -26,7 +31,8 @@ public:
     static constexpr VkFormat kReflectionFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
     explicit PprReflectPass(const vk::Context& ctx);
     // Whole-screen debug views ignore kPprIndirect.
-    graph::ImageHandle add(graph::RenderGraph& g, const FrameInputs& in, const PprReflectInputs& inputs) const;
+    graph::ImageHandle add(graph::RenderGraph& g, const FrameInputs& in, const PprReflectInputs& inputs,
+                           graph::ImageHandle* distanceOut = nullptr) const;
 
 private:
     const vk::Context& ctx_;

@@ -11,6 +11,27 @@ PPR_CONST(float, kTaaFeedbackMax, 0.97f)
 // Variance clipping box: mean ± this many standard deviations of the 3×3 neighbourhood (YCoCg).
 PPR_CONST(float, kTaaClipSigma, 1.25f)
 
+// --set reproject: how the reflection's own history is fetched (taa_reflection.comp).
+PPR_CONST(uint, kReprojectSurface, 0u)     // the surface's motion, as a plain TAA
+PPR_CONST(uint, kReprojectCandidates, 1u)  // the smallest of the surface's and reflected point's motion, parallax-scaled
+PPR_CONST(uint, kReprojectVirtual, 2u)     // the virtual point's motion (exact for planar reflectors)
+// candidates: a motion vector shrinks by this fraction per metre of reflected path (the seed note's
+// parallax correction, saturate(1 - length × factor)).
+PPR_CONST(float, kTaaParallaxPerMetre, 0.05f)
+// virtual: the history is another surface's (disoccluded) when the view depth it stored for its
+// virtual point differs from the expected one by more than this fraction.
+PPR_CONST(float, kTaaVirtualDepthTolerance, 0.02f)
+
+PPR_BEGIN
+struct TaaReflectionPush {
+    uint historyValid;
+    uint mode;         // kReproject*
+    uint hasDistance;  // 0: the technique gave no path lengths; candidates and virtual use the surface's motion
+    uint pad0;
+};
+PPR_END
+PPR_SIZE_CHECK(TaaReflectionPush, 16);
+
 PPR_BEGIN
 struct TaaPush {
     uint historyValid;  // 0 on the first frame after creation or a reset: the output is the current frame

@@ -3,6 +3,7 @@
 #include "common/compute_pass.hpp"
 #include "taa/taa.h"
 #include "taa_comp.h"
+#include "taa_reflection_comp.h"
 
 namespace ppr::passes {
 
@@ -10,6 +11,32 @@ TaaPass::TaaPass(const vk::Context& ctx) : ctx_(ctx) {
     shader::PipelineLayoutDesc layout;
     layout.pushConstantBytes = sizeof(gpu::TaaPush);
     pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(taa_comp), layout, "taa");
+    shader::PipelineLayoutDesc reflectionLayout;
+    reflectionLayout.pushConstantBytes = sizeof(gpu::TaaReflectionPush);
+    reflectionPipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(taa_reflection_comp), reflectionLayout, "taa.reflection");
+}
+
+graph::ImageHandle TaaPass::addReflection(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history,
+                                          const TaaReflectionInputs& inputs) const {
+    const graph::HistoryImage h = g.history(history, kReflectionHistoryName, {in.extent.width, in.extent.height, kHistoryFormat, 1});
+    gpu::TaaReflectionPush push{};
+    push.historyValid = h.previousValid ? 1u : 0u;
+    push.mode = inputs.mode;
+    push.hasDistance = inputs.distance ? 1u : 0u;
+    const VkSampler nearest = in.samplers->nearestClamp;
+    graph::ImageHandle shown, written;
+    ComputePass(g, ctx_, "taa.reflection", reflectionPipeline_)
+        .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
+        .sampled(inputs.reflection, nearest)
+        .sampled(inputs.depth, nearest)
+        .sampled(inputs.normal, nearest)
+        .sampled(inputs.distance.value_or(inputs.depth), nearest)  // unread without a distance (hasDistance 0)
+        .sampled(h.previous, in.samplers->linearClamp)
+        .storageWrite(g.createImage("taa.reflection.shown", {in.extent.width, in.extent.height, kHistoryFormat, 1}), &shown)
+        .storageWrite(h.current, &written)
+        .push(push)
+        .dispatch(in.extent, gpu::kTaaGroupSize);
+    return shown;
 }
 
 graph::ImageHandle TaaPass::add(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history, graph::ImageHandle hdr,

@@ -4,20 +4,34 @@
 #include "common/frame_inputs.hpp"
 #include "graph/history.hpp"
 
+#include <optional>
+
 namespace ppr::passes {
+
+struct TaaReflectionInputs {
+    graph::ImageHandle reflection;               // common/reflection.h
+    std::optional<graph::ImageHandle> distance;  // reflected path lengths (x), when the technique gives them
+    graph::ImageHandle depth, normal;            // G-buffer
+    uint32_t mode = 0;                           // taa.h kReproject*
+};
 
 class TaaPass {
 public:
     static constexpr const char* kHistoryName = "taa.color";
+    static constexpr const char* kReflectionHistoryName = "taa.reflection";
     static constexpr VkFormat kHistoryFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 
     explicit TaaPass(const vk::Context& ctx);
     graph::ImageHandle add(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history, graph::ImageHandle hdr,
                            graph::ImageHandle depth) const;
+    // The reflection's own history (taa_reflection.comp): returns the accumulated reflection image for
+    // the composite (same class codes in alpha as the technique's).
+    graph::ImageHandle addReflection(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history,
+                                     const TaaReflectionInputs& inputs) const;
 
 private:
     const vk::Context& ctx_;
-    shader::Pipeline pipeline_;
+    shader::Pipeline pipeline_, reflectionPipeline_;
 };
 
 }  // namespace ppr::passes

@@ -45,6 +45,29 @@ TEST(CameraPathRun, CompareScoresEveryFrameOfAStrafe) {
     std::filesystem::remove_all(dir);
 }
 
+// The reflection's own history: reprojected through the virtual point it stays closer to the
+// supersampled reference under a strafe than fetched by the surface's motion or the seed note's
+// candidates. Every row is one shot from the same jitter sample, so frame 0 is the same picture.
+TEST(CameraPathRun, VirtualReprojectionBeatsSurfaceAndCandidatesOnReflectorsUnderStrafe) {
+    auto dir = tempDir("path-reproject");
+    RunResult r = runPpr("compare --validation --path strafe --frames 8 --camera puddles --size 160x90 --technique planar@taa=1,reproject=surface "
+                         "--technique planar@taa=1,reproject=candidates --technique planar@taa=1,reproject=virtual --out " + dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const nlohmann::json m = readJson(dir / "metrics.json");
+    EXPECT_EQ(m["validation_errors"], 0);
+    auto reflectorDb = [&](const char* mode) {
+        return m["techniques"][std::string("planar@taa=1,reproject=") + mode]["temporal"]["reflector_psnr_db_mean"].get<double>();
+    };
+    std::printf("reflector pixels, strafe: surface %.2f dB, candidates %.2f dB, virtual %.2f dB\n", reflectorDb("surface"), reflectorDb("candidates"),
+                reflectorDb("virtual"));
+    EXPECT_GT(reflectorDb("virtual"), reflectorDb("surface"));
+    EXPECT_GT(reflectorDb("virtual"), reflectorDb("candidates"));
+    const std::string surfaceFrames = m["techniques"]["planar@taa=1,reproject=surface"]["frames_dir"];
+    const std::string virtualFrames = m["techniques"]["planar@taa=1,reproject=virtual"]["frames_dir"];
+    EXPECT_EQ(util::readPng((dir / surfaceFrames / "frame_000.png").string()).pixels, util::readPng((dir / virtualFrames / "frame_000.png").string()).pixels);
+    std::filesystem::remove_all(dir);
+}
+
 TEST(CameraPathRun, StillPathMeasuresFlicker) {
     auto dir = tempDir("path-still");
     RunResult r = runPpr("compare --path still --frames 4 --camera overview --size 96x54 --technique planar --out " + dir.string());

@@ -1,0 +1,101 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// The reflection's own history (--set taa=1): the technique's reflection image blended with last
+// frame's accumulated reflection, fetched by --set reproject (taa.h kReproject*), before the composite.
+// The history's alpha holds the view depth of each pixel's virtual point (the reflected point mirrored
+// through the reflector, on the pixel's view ray at the reflected path's length), so that `virtual`
+// can tell a disoccluded history from its own, as a depth-history reprojection would.
+#include "common/bindings.glsl"
+#include "common/reflection.h"
+#include "taa/taa.h"
+#include "taa/taa_color.glsl"
+#include "taa/taa_motion.glsl"
+
+layout(local_size_x = kTaaGroupSize, local_size_y = kTaaGroupSize) in;
+layout(set = 0, binding = 1) uniform sampler2D reflectionTex;  // common/reflection.h, nearest
+layout(set = 0, binding = 2) uniform sampler2D depthTex;
+layout(set = 0, binding = 3) uniform sampler2D normalTex;
+layout(set = 0, binding = 4) uniform sampler2D distanceTex;    // reflected path length in x (0 = unknown)
+layout(set = 0, binding = 5) uniform sampler2D historyTex;     // linear, clamped
+layout(set = 0, binding = 6, rgba16f) uniform writeonly image2D outShown;
+layout(set = 0, binding = 7, rgba16f) uniform writeonly image2D outHistory;
+layout(push_constant, scalar) uniform Push { TaaReflectionPush pc; };
+
+// A history texel with alpha below this had no reflection, or one of unknown depth.
+const float kKnownDepth = 1e-2;
+
+void main() {
+    ivec2 pix = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 size = ivec2(frame.screenSize);
+    if (any(greaterThanEqual(pix, size))) return;
+    vec4 current = texelFetch(reflectionTex, pix, 0);
+    if (current.a == kReflectionNone) {
+        imageStore(outShown, pix, current);
+        imageStore(outHistory, pix, vec4(0.0));
+        return;
+    }
+    // Neighbourhood of the reflection alone (pixels with one), compressed YCoCg.
+    vec3 m1 = vec3(0.0), m2 = vec3(0.0);
+    float count = 0.0;
+    for (int y = -1; y <= 1; ++y)
+        for (int x = -1; x <= 1; ++x) {
+            vec4 t = texelFetch(reflectionTex, clamp(pix + ivec2(x, y), ivec2(0), size - 1), 0);
+            if (t.a == kReflectionNone) continue;
+            vec3 c = toYCoCg(compress(t.rgb));
+            m1 += c;
+            m2 += c * c;
+            count += 1.0;
+        }
+    vec3 mean = m1 / count;
+    vec3 sigma = sqrt(max(m2 / count - mean * mean, vec3(0.0)));
+    vec3 currentY = toYCoCg(compress(current.rgb));
+
+    vec2 uv = (vec2(pix) + 0.5) * frame.invScreenSize;
+    float depth = texelFetch(depthTex, pix, 0).r;
+    float prevW;
+    vec2 historyUv = previousUv(uv, depth, prevW);
+    float dist = pc.hasDistance != 0u ? texelFetch(distanceTex, pix, 0).x : 0.0;
+    vec3 surface = worldFromDepth(uv, depth);
+    vec3 view = normalize(surface - frame.cameraPos.xyz);
+    vec4 virtualPoint = vec4(frame.cameraPos.xyz + view * dist, 1.0);
+    float expectedW = 0.0;  // virtual: the view depth last frame's history should hold there
+    if (dist > 0.0 && pc.mode == kReprojectVirtual) {
+        historyUv = previousUvOfPoint(uv, virtualPoint, prevW);
+        expectedW = prevW;
+    } else if (dist > 0.0 && pc.mode == kReprojectCandidates) {
+        // The seed note's candidates: the motion at the incidence (the surface) and at the intersection
+        // (the reflected point, where it is seen on screen), each also parallax-scaled; the smallest wins.
+        vec3 n = normalize(texelFetch(normalTex, pix, 0).xyz);
+        vec3 reflected = surface + reflect(view, n) * max(dist - length(surface - frame.cameraPos.xyz), 0.0);
+        vec4 clip = frame.viewProj * vec4(reflected, 1.0);
+        vec2 reflectedUv = clip.xy / clip.w * 0.5 + 0.5;
+        float reflectedW;
+        vec2 atIntersection = previousUvOfPoint(reflectedUv, vec4(reflected, 1.0), reflectedW) - reflectedUv;
+        vec2 atIncidence = historyUv - uv;
+        float parallax = clamp(1.0 - dist * kTaaParallaxPerMetre, 0.0, 1.0);
+        vec2 best = atIncidence;
+        vec2 others[3] = vec2[3](atIntersection, atIncidence * parallax, atIntersection * parallax);
+        for (int i = 0; i < 3; ++i)
+            if (dot(others[i], others[i]) < dot(best, best)) best = others[i];
+        historyUv = uv + best;
+    }
+    bool onScreen = prevW > 0.0 && all(greaterThanEqual(historyUv, vec2(0.0))) && all(lessThanEqual(historyUv, vec2(1.0)));
+
+    vec3 resolved = currentY;
+    if (pc.historyValid != 0u && onScreen) {
+        // Colour through the bicubic filter (a bilinear one blurs a little more every frame); the stored
+        // depth through the bilinear one (no overshoot).
+        vec4 history = vec4(sampleCatmullRom(historyTex, historyUv), textureLod(historyTex, historyUv, 0.0).a);
+        bool hadReflection = history.a > 0.0;
+        bool disoccluded = expectedW > 0.0 && history.a > kKnownDepth && abs(history.a - expectedW) > kTaaVirtualDepthTolerance * expectedW;
+        if (hadReflection && !disoccluded) {
+            vec3 h = clipToBox(toYCoCg(compress(history.rgb)), mean, kTaaClipSigma * sigma + vec3(1e-4));
+            resolved = mix(currentY, h, historyFeedback(currentY.x, h.x));
+        }
+    }
+    vec3 rgb = expand(fromYCoCg(resolved));
+    if (any(isnan(rgb)) || any(isinf(rgb))) rgb = current.rgb;
+    imageStore(outShown, pix, vec4(rgb, current.a));  // the class code stays the technique's
+    float currentW = (frame.viewProj * virtualPoint).w;
+    imageStore(outHistory, pix, vec4(rgb, dist > 0.0 ? max(currentW, 2.0 * kKnownDepth) : kKnownDepth * 0.5));
+}
