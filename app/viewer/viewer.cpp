@@ -309,7 +309,10 @@ void Viewer::updateCamera(float dt) {
     scene::FlyCameraInput in;
     in.dt = std::clamp(dt, 0.0f, 0.1f);
     auto key = [&](int k) { return glfwGetKey(w, k) == GLFW_PRESS ? 1.0f : 0.0f; };
-    if (!imgui_->wantsKeyboard()) {
+    // With Ctrl held the letters are the editor's shortcuts (Ctrl+S saves, Ctrl+Z undoes), not movement:
+    // a Ctrl+S caught mid-press by a frame used to move the camera back a step.
+    const bool ctrl = glfwGetKey(w, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS || glfwGetKey(w, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
+    if (!imgui_->wantsKeyboard() && !ctrl) {
         in.forward = key(GLFW_KEY_W) - key(GLFW_KEY_S);
         in.right = key(GLFW_KEY_D) - key(GLFW_KEY_A);
         in.up = key(GLFW_KEY_E) - key(GLFW_KEY_Q);
