@@ -87,6 +87,10 @@ nlohmann::json techniqueJson(const BenchResults& r, const BenchTechnique& t) {
     if (const auto ratio = benchRatio(r, t.techniqueMs, "ppr")) e["ratio_to_ppr"] = *ratio;
     if (const auto ratio = benchRatio(r, t.techniqueMs, "floor")) e["ratio_to_floor"] = *ratio;
     if (const auto build = hizBuildMs(t)) e["hiz_build_ms"] = *build;
+    if (const auto taa = taaMs(t)) {
+        e["taa_gpu_ms"] = *taa;
+        e["taa_ratio_to_floor"] = numberOrNull(benchRatio(r, *taa, "floor"));
+    }
     if (const auto parts = pprCostParts(t)) {
         e["planar_gpu_ms"] = parts->planar;
         e["glass_gpu_ms"] = parts->glass;
@@ -195,6 +199,12 @@ std::optional<double> hizBuildMs(const BenchTechnique& t) {
     return sumPasses(t.passMs, isHiz);
 }
 
+std::optional<double> taaMs(const BenchTechnique& t) {
+    auto isTaa = [](const std::string& pass) { return pass == "taa" || pass.rfind("taa.", 0) == 0; };
+    if (std::none_of(t.passMs.begin(), t.passMs.end(), [&](const auto& p) { return isTaa(p.first); })) return std::nullopt;
+    return sumPasses(t.passMs, isTaa);
+}
+
 std::optional<PprCostParts> pprCostParts(const BenchTechnique& t) {
     if (!t.passMs.count("ppr.project")) return std::nullopt;
     PprCostParts parts;
@@ -259,6 +269,10 @@ std::string benchMarkdown(const BenchResults& r, const std::string& commandLine)
               "least any screen-space reflection costs; it draws none). PSNR and coverage against planar; frame ms: the whole "
               "frame.\n\n";
         md += techniquesTable(r) + "\n";
+        for (const BenchTechnique& t : r.techniques)
+            if (const auto taa = taaMs(t))
+                md += "TAA in " + t.name + " (taa, taa.*; not in its GPU ms): " + fixed(*taa, 2) + " ms, × floor " +
+                      fixedOr(benchRatio(r, *taa, "floor"), 2, "–") + "\n\n";
         md += "### Per pass (GPU ms; bold: counted in the technique's GPU ms)\n\n" + passesTable(r) + "\n";
         md += std::string("### Against the slides (") + kSlidesDevice + " at " + std::to_string(kSlidesSize[0]) + "x" +
               std::to_string(kSlidesSize[1]) + "; another GPU, scene and size: compare the ratios)\n\n" + slidesTable(r) + "\n";

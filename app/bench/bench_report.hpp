@@ -49,6 +49,9 @@ struct BenchResults {
 
 // The depth hierarchy build alone (hiz.* passes); absent when the technique built none.
 std::optional<double> hizBuildMs(const BenchTechnique& technique);
+// TAA's passes (`taa` and `taa.*`, a row run with --set taa=1, e.g. ppr@taa=1): the frame's and the
+// reflection's history. Not part of the technique's GPU ms. Absent for a row without them.
+std::optional<double> taaMs(const BenchTechnique& technique);
 // PPR's GPU ms in three parts that add up to it: the planar part (tile classification and PPR's own
 // passes), the glass atlas (ppr.glass.*) and the fallback (the depth hierarchy and ppr.fallback).
 // Absent for a technique without a projection pass.

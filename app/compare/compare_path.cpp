@@ -8,6 +8,7 @@
 #include "bench/bench_plot.hpp"
 #include "capture/report.hpp"
 #include "metrics/compare_metrics.hpp"
+#include "metrics/contact_sheet.hpp"
 #include "metrics/temporal_metrics.hpp"
 #include "render/headless_session.hpp"
 #include "scene/camera_path.hpp"
@@ -28,6 +29,15 @@ std::string frameFile(const std::string& folder, size_t frame) {
     char name[32];
     std::snprintf(name, sizeof name, "/frame_%03zu.png", frame);
     return folder + name;
+}
+
+// A row's name short enough for a tile's label: "planar@taa=1,reproject=virtual" → "planar virtual".
+std::string stripName(std::string t) {
+    for (const std::string& cut : {std::string("taa=1,reproject="), std::string("reproject=")})
+        if (const size_t at = t.find(cut); at != std::string::npos) t.erase(at, cut.size());
+    for (char& c : t)
+        if (c == '@' || c == ',') c = ' ';
+    return t;
 }
 
 }  // namespace
@@ -74,6 +84,9 @@ int runComparePath(const Options& o) {
         csv << "technique,frame,x,y,z,yaw_deg,pitch_deg,psnr_db,reflector_psnr_db,change,frame_gpu_ms\n";
         PlotSpec whole{"whole frame vs " + std::to_string(scene::kJitterLength) + "x supersampled " + o.reference, "frame", "PSNR (dB)"};
         PlotSpec reflectors{"reflector pixels", "frame", "PSNR (dB)"};
+        // strip.png: per row the middle and the last frame, each beside its error on reflector pixels.
+        const size_t stripFrames[] = {poses.size() / 2, poses.size() - 1};
+        std::vector<ContactTile> strip;
         for (const std::string& t : o.techniques) {
             const Settings shared = headless.setVariant(t);
             const std::string folder = (dir / ("frames_" + variantFileName(t))).string();
@@ -91,6 +104,12 @@ int runComparePath(const Options& o) {
                 frames.push_back(f);
                 frameMs.push_back(r.totalMedianMs);
                 util::writePng(frameFile(folder, i), r.image);
+                if (i == stripFrames[0] || i == stripFrames[1]) {
+                    char label[64];
+                    std::snprintf(label, sizeof label, " f%zu %.1f dB", i, f.reflectorPsnrDb);
+                    strip.push_back({stripName(t) + label, r.image});
+                    strip.push_back({"error (white = 0.25)", displayErrorHeatMap(r.image, reference[i].supersampled, reference[i].reflectorPixels)});
+                }
                 const scene::CameraPose& p = poses[i];
                 csv << '"' << t << "\"," << i << ',' << p.position.x << ',' << p.position.y << ',' << p.position.z << ',' << p.yawDeg << ','
                     << p.pitchDeg << ',' << f.psnrDb << ',' << f.reflectorPsnrDb << ',' << f.change << ',' << r.totalMedianMs << '\n';
@@ -117,8 +136,9 @@ int runComparePath(const Options& o) {
             std::printf("\n");
         }
         util::writeTextFile(dir / "temporal.csv", csv.str());
+        util::writePng((dir / "strip.png").string(), makeContactSheet(strip, 4));
         util::writePng((dir / "temporal.png").string(), sideBySide({renderPlot(whole, 640, 400), renderPlot(reflectors, 640, 400)}));
-        metrics["images"] = {{"plot", "temporal.png"}, {"csv", "temporal.csv"}, {"reference_last_frame", "reference/" + frameFile("", poses.size() - 1).substr(1)}};
+        metrics["images"] = {{"plot", "temporal.png"}, {"csv", "temporal.csv"}, {"strip", "strip.png"}, {"reference_last_frame", "reference/" + frameFile("", poses.size() - 1).substr(1)}};
         metrics["validation"] = ctx.validationEnabled();
         metrics["validation_errors"] = ctx.validationErrors() - errorsBefore;
         writeJsonFile((dir / "metrics.json").string(), metrics);

@@ -1,5 +1,6 @@
 #include "metrics/temporal_metrics.hpp"
 
+#include "common/heat_map.h"
 #include "metrics/compare_metrics.hpp"
 
 #include <algorithm>
@@ -13,6 +14,31 @@ double meanAbsoluteChange(const util::Rgba8Image& a, const util::Rgba8Image& b) 
     const double sum = sumOverRgbDifferences(a, b, "meanAbsoluteChange", [](double d) { return std::abs(d); });
     const size_t n = size_t(a.width) * a.height;
     return n ? sum / (3.0 * double(n)) : 0.0;
+}
+
+util::Rgba8Image displayErrorHeatMap(const util::Rgba8Image& image, const util::Rgba8Image& reference, const FloatImage& mask) {
+    const size_t n = size_t(image.width) * image.height;
+    const bool sameSize = reference.width == image.width && reference.height == image.height && mask.width == image.width &&
+                          mask.height == image.height && image.pixels.size() == n * 4 && reference.pixels.size() == n * 4 &&
+                          mask.rgba.size() == n * 4;
+    if (!sameSize)
+        throw std::invalid_argument("displayErrorHeatMap: image " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                                    ", reference " + std::to_string(reference.width) + "x" + std::to_string(reference.height) + ", mask " +
+                                    std::to_string(mask.width) + "x" + std::to_string(mask.height));
+    util::Rgba8Image out = image;
+    for (size_t i = 0; i < n; ++i) {
+        uint8_t* p = &out.pixels[i * 4];
+        if (mask.rgba[i * 4 + 3] > 0.0f) {
+            int e = 0;
+            for (int c = 0; c < 3; ++c) e = std::max(e, std::abs(int(image.pixels[i * 4 + c]) - int(reference.pixels[i * 4 + c])));
+            const glm::vec3 heat = gpu::errorHeatColor(float(e) / 255.0f);
+            for (int c = 0; c < 3; ++c) p[c] = static_cast<uint8_t>(std::lround(std::clamp(heat[c], 0.0f, 1.0f) * 255.0f));
+        } else {
+            for (int c = 0; c < 3; ++c) p[c] = static_cast<uint8_t>(p[c] / 4);
+        }
+        p[3] = 255;
+    }
+    return out;
 }
 
 TemporalSummary summarizeTemporal(const std::vector<TemporalFrame>& frames, bool still, uint32_t convergenceFrames) {

@@ -2,6 +2,7 @@
 // Scores of a camera path run (compare --path, docs/temporal.md): per frame PSNR against the
 // supersampled reference, over the whole frame and over reflector pixels, and the frame-to-frame
 // change that is flicker when the camera stands still.
+#include "metrics/compare_metrics.hpp"
 #include "util/image_io.hpp"
 
 #include <cstdint>
@@ -13,6 +14,12 @@ namespace ppr::app {
 // Mean absolute difference of the rgb channels of two display images, in 8-bit levels (0..255).
 // Throws std::invalid_argument when the sizes differ.
 double meanAbsoluteChange(const util::Rgba8Image& a, const util::Rgba8Image& b);
+
+// A frame's error against its reference as compare's heat maps show it (common/heat_map.h): on the
+// pixels where `mask` (a reflection image, screen-sized) has alpha > 0, e = max over rgb of the display
+// difference, black → red → yellow → white up to kErrorHeatFullScale; elsewhere `image` at 25 %.
+// Throws std::invalid_argument when the sizes differ.
+util::Rgba8Image displayErrorHeatMap(const util::Rgba8Image& image, const util::Rgba8Image& reference, const FloatImage& mask);
 
 struct TemporalFrame {
     double psnrDb = 0.0;           // whole frame, against the supersampled reference

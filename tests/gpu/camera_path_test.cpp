@@ -42,6 +42,8 @@ TEST(CameraPathRun, CompareScoresEveryFrameOfAStrafe) {
     }
     EXPECT_EQ(lineCount(dir / "temporal.csv"), 1u + 2u * 4u);
     EXPECT_TRUE(std::filesystem::exists(dir / "temporal.png"));
+    EXPECT_EQ(m["images"]["strip"], "strip.png");
+    EXPECT_TRUE(std::filesystem::exists(dir / "strip.png"));
     std::filesystem::remove_all(dir);
 }
 

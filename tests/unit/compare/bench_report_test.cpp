@@ -218,3 +218,17 @@ TEST(BenchReport, MarkdownSlidesTable) {
     EXPECT_NE(md.find("| ↳ ssr-hiz hierarchy build | 0.35 | 0.37 | 0.30 | 0.30 |"), std::string::npos) << md;
     EXPECT_NE(md.find("| ssr-lowq | 0.95 | 1.00 | – | – |"), std::string::npos) << md;  // not measured here
 }
+
+TEST(BenchReport, TaaPassesAreReportedApartFromTheTechnique) {
+    BenchResults r = results();
+    r.techniques.push_back(technique("ppr@taa=1", withScene({{"ppr.project", 2.0}, {"ppr.reflect", 0.25}, {"taa.reflection", 0.5}, {"taa", 1.5}})));
+    const BenchTechnique& withTaa = r.techniques.back();
+    ASSERT_TRUE(taaMs(withTaa));
+    EXPECT_DOUBLE_EQ(*taaMs(withTaa), 2.0);
+    EXPECT_FALSE(taaMs(find(r, "ppr")));
+    const nlohmann::json j = benchJson(r)["techniques"]["results"];
+    EXPECT_DOUBLE_EQ(j["ppr@taa=1"]["taa_gpu_ms"].get<double>(), 2.0);
+    EXPECT_DOUBLE_EQ(j["ppr@taa=1"]["taa_ratio_to_floor"].get<double>(), 2.0 / find(r, "floor").techniqueMs);
+    EXPECT_FALSE(j["ppr"].contains("taa_gpu_ms"));
+    EXPECT_NE(benchMarkdown(r, "ppr bench").find("TAA in ppr@taa=1"), std::string::npos);
+}

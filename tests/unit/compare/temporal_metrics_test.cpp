@@ -49,3 +49,28 @@ TEST(TemporalMetrics, MeansOverEveryFrameFlickerOnlyWhenStillAndSettled) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(TemporalMetrics, HeatMapColoursMaskPixelsByTheirDisplayErrorAndDimsTheRest) {
+    ppr::util::Rgba8Image image = flat(200), reference = flat(200);
+    image.pixels[0] = 200 - 64;  // pixel 0: an error of 64 levels (a quarter: full scale, white)
+    image.pixels[4 + 1] = 200 - 21;  // pixel 1: 21 levels, a third of full scale: red
+    FloatImage mask;
+    mask.width = 3;
+    mask.height = 2;
+    mask.rgba.assign(3 * 2 * 4, 0.0f);
+    mask.rgba[3] = mask.rgba[4 + 3] = mask.rgba[8 + 3] = 1.0f;  // pixels 0..2 are reflector pixels
+    const ppr::util::Rgba8Image heat = displayErrorHeatMap(image, reference, mask);
+    EXPECT_EQ(heat.pixels[0], 255);
+    EXPECT_EQ(heat.pixels[2], 255);
+    EXPECT_GT(heat.pixels[4], 240);  // red
+    EXPECT_LT(heat.pixels[5], 15);
+    EXPECT_EQ(heat.pixels[8], 0);  // no error: black
+    EXPECT_EQ(heat.pixels[12], 50);  // outside the mask: the image at 25 %
+    EXPECT_EQ(heat.pixels[15], 255);
+    mask.width = 2;
+    EXPECT_THROW(displayErrorHeatMap(image, reference, mask), std::invalid_argument);
+}
+
+}  // namespace
