@@ -33,6 +33,7 @@
 #include <deque>
 #include <filesystem>
 #include <memory>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -93,11 +94,17 @@ struct InputEvents {
     int cycleTechnique = 0;
     bool capture = false;
     bool resized = false;
+    // Keys pressed with Ctrl (shortcuts), until released: not movement even when Ctrl goes up first
+    // (xdotool's ctrl+s releases Ctrl before S; a frame in between saw S alone and moved the camera).
+    std::set<int> shortcutKeys;
 };
 
 void onKey(GLFWwindow* w, int key, int, int action, int mods) {
     auto* in = static_cast<InputEvents*>(glfwGetWindowUserPointer(w));
-    if (!in || action != GLFW_PRESS) return;
+    if (!in) return;
+    if (action == GLFW_RELEASE) in->shortcutKeys.erase(key);
+    if (action != GLFW_PRESS) return;
+    if (mods & GLFW_MOD_CONTROL) in->shortcutKeys.insert(key);
     if (key == GLFW_KEY_F2) ++in->cycleDebug;
     if (key == GLFW_KEY_F3) ++in->cycleTechnique;
     if (key == GLFW_KEY_F12) in->capture = true;
@@ -308,7 +315,7 @@ void Viewer::updateCamera(float dt) {
     GLFWwindow* w = window_.handle;
     scene::FlyCameraInput in;
     in.dt = std::clamp(dt, 0.0f, 0.1f);
-    auto key = [&](int k) { return glfwGetKey(w, k) == GLFW_PRESS ? 1.0f : 0.0f; };
+    auto key = [&](int k) { return glfwGetKey(w, k) == GLFW_PRESS && !input_.shortcutKeys.count(k) ? 1.0f : 0.0f; };
     // With Ctrl held the letters are the editor's shortcuts (Ctrl+S saves, Ctrl+Z undoes), not movement:
     // a Ctrl+S caught mid-press by a frame used to move the camera back a step.
     const bool ctrl = glfwGetKey(w, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS || glfwGetKey(w, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
