@@ -18,6 +18,7 @@
 #include <fstream>
 #include <memory>
 #include <set>
+#include <stdexcept>
 
 namespace ppr::app {
 namespace {
@@ -137,7 +138,21 @@ private:
         Rig rig(*ctx_, loadScene(o_), o_);
         const ResolvedCamera cam = resolveCameras(rig.scene, o_.camera).front();
         results_.techniquesCamera = cam.name;
-        std::vector<std::string> list = techniqueList();
+        // A technique this device cannot run (raytraced without ray queries): named on the command line it
+        // is an error, as in capture; in the default list it is skipped and said so.
+        std::vector<std::string> rows;
+        for (const std::string& t : techniqueList()) {
+            const std::string why = rig.renderer->unsupported(parseTechniqueVariant(t).name, extent_);
+            if (why.empty()) {
+                rows.push_back(t);
+                continue;
+            }
+            if (!o_.techniques.empty()) throw std::runtime_error("--technique " + t + ": " + why);
+            progress_->step("technique " + t + ": skipped");
+            std::fprintf(stderr, "ppr: bench: skipping %s: %s\n", t.c_str(), why.c_str());
+            results_.skippedTechniques[t] = why;
+        }
+        std::vector<std::string> list = rows;
         if (!hasPlanar()) list.insert(list.begin(), "planar");  // the reference, not listed
         const float exposure = rig.headless->settings().values().view.exposure;
         std::map<std::string, Measured> measured;
@@ -148,7 +163,7 @@ private:
             rig.headless->settings() = shared;
         }
         const Measured& reference = measured.at("planar");
-        for (const std::string& t : techniqueList()) {
+        for (const std::string& t : rows) {
             const Measured& m = measured.at(t);
             BenchTechnique row;
             row.name = t;

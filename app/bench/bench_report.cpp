@@ -229,6 +229,7 @@ nlohmann::json benchJson(const BenchResults& r) {
         nlohmann::json t = nlohmann::json::object();
         for (const BenchTechnique& row : r.techniques) t[row.name] = techniqueJson(r, row);
         j["techniques"] = {{"camera", r.techniquesCamera}, {"results", t}, {"slides", slidesJson()}};
+        if (!r.skippedTechniques.empty()) j["techniques"]["skipped"] = r.skippedTechniques;
     }
     if (!r.reflectors.empty()) {
         nlohmann::json rows = nlohmann::json::array();
@@ -269,6 +270,7 @@ std::string benchMarkdown(const BenchResults& r, const std::string& commandLine)
               "least any screen-space reflection costs; it draws none). PSNR and coverage against planar; frame ms: the whole "
               "frame.\n\n";
         md += techniquesTable(r) + "\n";
+        for (const auto& [name, why] : r.skippedTechniques) md += "Not run: " + name + " (" + why + ")\n\n";
         for (const BenchTechnique& t : r.techniques)
             if (const auto taa = taaMs(t))
                 md += "TAA in " + t.name + " (taa, taa.*; not in its GPU ms): " + fixed(*taa, 2) + " ms, × floor " +

@@ -41,6 +41,7 @@ struct BenchResults {
     nlohmann::json header;  // device, size, frames, warm-up, environment
     std::string techniquesCamera;
     std::vector<BenchTechnique> techniques;
+    std::map<std::string, std::string> skippedTechniques;  // technique → why this device cannot run it
     std::string reflectorsScene, reflectorsCamera;
     std::vector<BenchReflectorRow> reflectors;
     std::string coverageScene;
