@@ -1,14 +1,15 @@
 #include "frame/frame_constants.hpp"
 
+#include "common/clear_pass.hpp"
 #include "scene/mirror.hpp"
 
 #include <cstring>
 
 namespace ppr::app {
 
-FrameConstantsBuffer::FrameConstantsBuffer(const vk::Context& ctx, const shader::Samplers& samplers, const gpu::GpuScene& scene,
-                                           uint32_t framesInFlight)
-    : ctx_(ctx), samplers_(samplers), scene_(scene), framesInFlight_(framesInFlight) {
+FrameConstantsBuffer::FrameConstantsBuffer(const vk::Context& ctx, const shader::Samplers& samplers, const passes::ImageClear& clear,
+                                           const gpu::GpuScene& scene, uint32_t framesInFlight)
+    : ctx_(ctx), samplers_(samplers), clear_(clear), scene_(scene), framesInFlight_(framesInFlight) {
     const VkDeviceSize align = 256;  // ≥ minUniformBufferOffsetAlignment on every known device
     stride_ = (sizeof(gpu::FrameConstants) + align - 1) / align * align;
 }
@@ -28,6 +29,8 @@ void FrameConstantsBuffer::beginFrame(uint32_t slot, const scene::CameraPose& ca
                                       const glm::mat4& lightViewProj, glm::vec2 jitterPixels) {
     slot_ = slot;
     extent_ = extent;
+    computeClear_ = view.clear == ClearMethod::Compute ||
+                    (view.clear == ClearMethod::Auto && passes::ImageClear::computeIsCheaper(ctx_.info()));
     eye_ = camera.position;
     mirrored_.reset();
     gpu::FrameConstants f{};
@@ -65,6 +68,8 @@ passes::FrameInputs FrameConstantsBuffer::inputs(const ReflectorSet& reflectors,
     in.frameConstantsOffset = (VkDeviceSize(slot_) * capacity_ + view) * stride_;
     in.frameConstantsSize = sizeof(gpu::FrameConstants);
     in.samplers = &samplers_;
+    in.clear = &clear_;
+    in.computeClear = computeClear_;
     in.scene = &scene_;
     in.extent = extent_;
     in.drawReflectors = reflectors.surfaces().drawReflectors(slot_);

@@ -16,7 +16,8 @@ namespace ppr::app {
 
 class FrameConstantsBuffer {
 public:
-    FrameConstantsBuffer(const vk::Context& ctx, const shader::Samplers& samplers, const gpu::GpuScene& scene, uint32_t framesInFlight);
+    FrameConstantsBuffer(const vk::Context& ctx, const shader::Samplers& samplers, const passes::ImageClear& clear, const gpu::GpuScene& scene,
+                         uint32_t framesInFlight);
     ~FrameConstantsBuffer();
     FrameConstantsBuffer(const FrameConstantsBuffer&) = delete;
     FrameConstantsBuffer& operator=(const FrameConstantsBuffer&) = delete;
@@ -37,6 +38,8 @@ private:
     void flush();
     const vk::Context& ctx_;
     const shader::Samplers& samplers_;
+    const passes::ImageClear& clear_;
+    bool computeClear_ = false;  // this frame's clear method (ViewSettings::clear, auto resolved)
     const gpu::GpuScene& scene_;
     uint32_t framesInFlight_;
     vk::Buffer buffer_;

@@ -53,7 +53,8 @@ Renderer::Renderer(const vk::Context& ctx, const scene::Scene& scene) : ctx_(ctx
     hiz_ = std::make_unique<passes::HizPass>(ctx);
     glassReflect_ = std::make_unique<passes::GlassReflectPass>(ctx);
     reflectors_ = std::make_unique<ReflectorSet>(ctx, scene, kFramesInFlight);
-    constants_ = std::make_unique<FrameConstantsBuffer>(ctx, samplers_, *gpuScene_, kFramesInFlight);
+    imageClear_ = std::make_unique<passes::ImageClear>(ctx);
+    constants_ = std::make_unique<FrameConstantsBuffer>(ctx, samplers_, *imageClear_, *gpuScene_, kFramesInFlight);
     glass_ = std::make_unique<GlassAtlasFrame>(kFramesInFlight);
     stats_ = std::make_unique<FrameStatsBuffers>(ctx, kFramesInFlight);
     environment_ = std::make_unique<EnvironmentProbe>(ctx, *gpuScene_, *shadow_, *gbuffer_, *lighting_);
@@ -73,6 +74,7 @@ Renderer::~Renderer() {
     stats_.reset();
     glass_.reset();
     constants_.reset();
+    imageClear_.reset();
     reflectors_.reset();
     glassReflect_.reset();
     hiz_.reset();

@@ -3,6 +3,7 @@
 // all through the render graph, with the request's taps attached at their points. The request
 // carries the frame's choices by value (technique, settings); the renderer keeps only what lives
 // across frames: pipelines, the GPU scene, the reflector set, per-slot buffers, the technique modules.
+#include "common/clear_pass.hpp"
 #include "composite/composite_pass.hpp"
 #include "frame/technique.hpp"
 #include "glass_forward/glass_forward_pass.hpp"
@@ -95,6 +96,7 @@ private:
     std::unique_ptr<passes::HizPass> hiz_;
     std::unique_ptr<passes::GlassReflectPass> glassReflect_;
     std::unique_ptr<ReflectorSet> reflectors_;
+    std::unique_ptr<passes::ImageClear> imageClear_;
     std::unique_ptr<FrameConstantsBuffer> constants_;
     std::unique_ptr<GlassAtlasFrame> glass_;
     std::unique_ptr<FrameStatsBuffers> stats_;

@@ -11,11 +11,14 @@ enum class NormalMap : uint32_t { Off, Approx, Raymarch };
 enum class EnvSource : uint32_t { Sky, Probe };
 // PPR hole filling: none, the depth-aware rule (passes/ppr_common/ppr_resolve.glsl), or the slides' rule.
 enum class HoleRule : uint32_t { Off, Enclosed, Slides };
+// How passes clear images (passes/common/clear_pass.hpp); auto: compute unless the device is a CPU.
+enum class ClearMethod : uint32_t { Auto, Transfer, Compute };
 
 struct ViewSettings {        // owner: frame (composite, lighting, tonemap, shadow map)
     uint32_t debug;          // gpu::kDebug* (settings/debug_views.hpp)
     float exposure;
     uint32_t shadowRes;
+    ClearMethod clear;
 };
 struct EnvSettings {         // owner: env (every technique's misses)
     bool fallback;           // misses and screen edges fall back to the environment

@@ -164,6 +164,11 @@ const std::vector<SettingDecl>& settingDecls() {
         number("exposure", "frame", [](FrameSettings& s) -> float& { return s.view.exposure; }, 1, 0.01, 100.0, "exposure multiplier before tonemapping"),
         integer("shadowres", "frame", [](FrameSettings& s) -> uint32_t& { return s.view.shadowRes; }, 2048, 256, 8192,
                 "shadow map resolution (texels per side)"),
+        choice<ClearMethod>("clear", "frame", [](FrameSettings& s) -> ClearMethod& { return s.view.clear; }, {"auto", "transfer", "compute"},
+                            "auto",
+                            "how passes clear images: vkCmdClearColorImage (transfer; a memset on lavapipe), a compute pass (on an "
+                            "H100 over 50 times faster than the transfer clear), or auto (compute unless the device is a CPU); the "
+                            "same bits either way"),
     };
     return decls;
 }

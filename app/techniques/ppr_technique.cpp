@@ -44,7 +44,7 @@ void PprTechnique::addGlass(TechniqueFrame& f, passes::PprProjectInputs& project
                                                      f.camera.position, f.in.extent);
     regions = f.services.glass.upload(f.graph);  // the projection binds the table even without glass
     project.glass = f.services.glass.stats(f.slot).has_value();
-    project.glassAtlas = passes::addPprClearPass(f.graph, "ppr.glass.atlas", {atlasSize, atlasSize}, "ppr.glass.clear");
+    project.glassAtlas = passes::addPprClearPass(f.graph, f.in, "ppr.glass.atlas", {atlasSize, atlasSize}, "ppr.glass.clear");
     project.glassRegions = regions.table;
 }
 
@@ -57,7 +57,7 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
     const passes::TileLists tiles = f.classifyTiles(projected);
     passes::PprProjectInputs project;
     project.depth = f.gbuffer.depth;
-    project.intermediate = passes::addPprClearPass(f.graph, "ppr.intermediate", f.in.extent);
+    project.intermediate = passes::addPprClearPass(f.graph, f.in, "ppr.intermediate", f.in.extent);
     project.bounds = bounds_.add(f.graph, f.in, binding.reflectors, projected);
     project.stats = tiles.stats;
     project.tilesX = tiles.tilesX;

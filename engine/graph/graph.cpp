@@ -74,6 +74,11 @@ uint32_t RenderGraph::resourceId(const std::string& name) const {
     fail("no resource named '" + name + "'");
 }
 
+const ImageDesc& RenderGraph::imageDesc(ImageHandle h) const {
+    if (h.id >= resources_.size() || !resources_[h.id].isImage) fail("imageDesc: not an image handle of this graph");
+    return resources_[h.id].imageDesc;
+}
+
 // ---- passes --------------------------------------------------------------------------------------
 
 uint32_t RenderGraph::beginPass(std::string name, QueueKind kind) {

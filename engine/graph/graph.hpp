@@ -234,6 +234,7 @@ public:
     VkImageUsageFlags imageUsage(uint32_t id) const { return resources_[id].imageUsage; }    // derived
     VkBufferUsageFlags bufferUsage(uint32_t id) const { return resources_[id].bufferUsage; }  // derived
     uint32_t resourceId(const std::string& name) const;  // throws if unknown
+    const ImageDesc& imageDesc(ImageHandle h) const;     // throws on a handle this graph did not make
     const std::vector<ResourceUse>& passUses(uint32_t pass) const { return passes_[pass].uses; }
 
 private:

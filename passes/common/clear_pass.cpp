@@ -1,8 +1,32 @@
 #include "common/clear_pass.hpp"
 
-namespace ppr::passes {
+#include "clear_float_comp.h"
+#include "clear_uint_comp.h"
+#include "common/clear.h"
+#include "common/compute_pass.hpp"
 
-graph::ImageHandle addClearPass(graph::RenderGraph& g, const std::string& passName, graph::ImageHandle image, const VkClearColorValue& value) {
+#include <cstring>
+
+namespace ppr::passes {
+namespace {
+
+bool isUnsignedIntegerFormat(VkFormat format) {
+    switch (format) {
+        case VK_FORMAT_R8_UINT:
+        case VK_FORMAT_R8G8_UINT:
+        case VK_FORMAT_R8G8B8A8_UINT:
+        case VK_FORMAT_R16_UINT:
+        case VK_FORMAT_R16G16_UINT:
+        case VK_FORMAT_R16G16B16A16_UINT:
+        case VK_FORMAT_R32_UINT:
+        case VK_FORMAT_R32G32_UINT:
+        case VK_FORMAT_R32G32B32A32_UINT: return true;
+        default: return false;
+    }
+}
+
+graph::ImageHandle addTransferClear(graph::RenderGraph& g, const std::string& passName, graph::ImageHandle image,
+                                    const VkClearColorValue& value) {
     struct Data {
         graph::ImageHandle image;
     };
@@ -13,6 +37,37 @@ graph::ImageHandle addClearPass(graph::RenderGraph& g, const std::string& passNa
             vkCmdClearColorImage(pc.cmd(), pc.image(data.image), pc.layout(data.image), &value, 1, &range);
         });
     return d.image;
+}
+
+}  // namespace
+
+ImageClear::ImageClear(const vk::Context& ctx) : ctx_(ctx) {
+    shader::PipelineLayoutDesc layout;
+    layout.pushConstantBytes = sizeof(gpu::ClearPush);
+    float_ = shader::createComputePipeline(ctx, PPR_SPIRV(clear_float_comp), layout, "clear.float");
+    uint_ = shader::createComputePipeline(ctx, PPR_SPIRV(clear_uint_comp), layout, "clear.uint");
+}
+
+bool ImageClear::computeIsCheaper(const vk::DeviceInfo& device) { return device.type != "cpu"; }
+
+graph::ImageHandle ImageClear::addCompute(graph::RenderGraph& g, const std::string& passName, graph::ImageHandle image,
+                                          const VkClearColorValue& value) const {
+    const graph::ImageDesc& desc = g.imageDesc(image);
+    gpu::ClearPush push{};
+    std::memcpy(&push.value, value.uint32, sizeof(push.value));  // the union's bits, whichever member was set
+    push.extent = {desc.width, desc.height};
+    graph::ImageHandle out;
+    ComputePass(g, ctx_, passName, isUnsignedIntegerFormat(desc.format) ? uint_ : float_)
+        .storageWrite(image, &out)
+        .push(push)
+        .dispatch({desc.width, desc.height}, gpu::kClearGroupSize);
+    return out;
+}
+
+graph::ImageHandle addClearPass(graph::RenderGraph& g, const FrameInputs& in, const std::string& passName, graph::ImageHandle image,
+                                const VkClearColorValue& value) {
+    if (in.computeClear && in.clear) return in.clear->addCompute(g, passName, image, value);
+    return addTransferClear(g, passName, image, value);
 }
 
 }  // namespace ppr::passes

@@ -6,6 +6,8 @@
 
 namespace ppr::passes {
 
+class ImageClear;
+
 struct FrameInputs {
     VkBuffer frameConstants = VK_NULL_HANDLE;
     VkDeviceSize frameConstantsOffset = 0;
@@ -17,6 +19,9 @@ struct FrameInputs {
     // and the loose ones the G-buffer tests per pixel.
     VkBuffer drawReflectors = VK_NULL_HANDLE, reflectors = VK_NULL_HANDLE, looseReflectors = VK_NULL_HANDLE;
     uint32_t looseCount = 0;
+    // How passes clear images (common/clear_pass.hpp): ImageClear's compute clear, or a transfer clear.
+    const ImageClear* clear = nullptr;
+    bool computeClear = false;
 };
 
 // Vertex layout of scene::Vertex for the mesh passes.

@@ -29,7 +29,7 @@ graph::ImageHandle GlassReflectPass::addAtlasView(graph::RenderGraph& g, const F
 graph::ImageHandle GlassReflectPass::add(graph::RenderGraph& g, const FrameInputs& in, const GlassReflectInputs& inputs) const {
     const uint32_t size = inputs.atlasSize;
     // Rows below the packed regions are never read: cleared (cheap, transfer), not dispatched.
-    graph::ImageHandle target = addClearPass(g, "ppr.glass.reflection.clear",
+    graph::ImageHandle target = addClearPass(g, in, "ppr.glass.reflection.clear",
                                              g.createImage("ppr.glass.reflection", {size, size, kFormat, 1}), VkClearColorValue{});
     if (inputs.usedHeight == 0 || inputs.regionCount == 0) return target;
     gpu::GlassReflectPush push{};

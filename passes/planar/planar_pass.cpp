@@ -26,11 +26,11 @@ PlanarOutputs PlanarPass::add(graph::RenderGraph& g, const FrameInputs& in, cons
     PlanarOutputs out;
     graph::ImageHandle& reflection = out.reflection;
     reflection = addClearPass(
-        g, "planar.clear", g.createImage("planar.reflection", {in.extent.width, in.extent.height, PprReflectPass::kReflectionFormat, 1}), {});
-    out.path = addClearPass(g, "planar.distance.clear", g.createImage("planar.distance", {in.extent.width, in.extent.height, kPathFormat, 1}), {});
+        g, in, "planar.clear", g.createImage("planar.reflection", {in.extent.width, in.extent.height, PprReflectPass::kReflectionFormat, 1}), {});
+    out.path = addClearPass(g, in, "planar.distance.clear", g.createImage("planar.distance", {in.extent.width, in.extent.height, kPathFormat, 1}), {});
     if (glass) {
         const uint32_t size = glass->atlasSize;
-        out.glass = addClearPass(g, "planar.glass.clear", g.createImage("planar.glass", {size, size, GlassReflectPass::kFormat, 1}), {});
+        out.glass = addClearPass(g, in, "planar.glass.clear", g.createImage("planar.glass", {size, size, GlassReflectPass::kFormat, 1}), {});
     }
     if (views.empty()) return out;
     GBuffer mirrored = GBufferPass::createTargets(g, "planar.gbuffer", in.extent);

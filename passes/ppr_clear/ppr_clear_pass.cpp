@@ -5,10 +5,10 @@
 
 namespace ppr::passes {
 
-graph::ImageHandle addPprClearPass(graph::RenderGraph& g, const std::string& name, VkExtent2D extent, const std::string& passName) {
+graph::ImageHandle addPprClearPass(graph::RenderGraph& g, const FrameInputs& in, const std::string& name, VkExtent2D extent, const std::string& passName) {
     VkClearColorValue clear{};
     clear.uint32[0] = gpu::kPprClearValue;
-    return addClearPass(g, passName, g.createImage(name, {extent.width, extent.height, kPprIntermediateFormat, 1}), clear);
+    return addClearPass(g, in, passName, g.createImage(name, {extent.width, extent.height, kPprIntermediateFormat, 1}), clear);
 }
 
 }  // namespace ppr::passes

@@ -1,6 +1,7 @@
 #pragma once
-// PPR step 1: the intermediate buffer (r32ui, one value per pixel), cleared to kPprClearValue with a
-// transfer clear — on lavapipe 0.2 ms against 8 ms for a compute clear at 1080p.
+// PPR step 1: the intermediate buffer (r32ui, one value per pixel), cleared to kPprClearValue the
+// way FrameInputs asks (common/clear_pass.hpp: transfer or compute, whichever the device does faster).
+#include "common/frame_inputs.hpp"
 #include "graph/graph.hpp"
 
 namespace ppr::passes {
@@ -8,6 +9,6 @@ namespace ppr::passes {
 constexpr VkFormat kPprIntermediateFormat = VK_FORMAT_R32_UINT;
 
 // Creates `name` at `extent` and adds the clear pass `passName`; returns the cleared version.
-graph::ImageHandle addPprClearPass(graph::RenderGraph& g, const std::string& name, VkExtent2D extent, const std::string& passName = "ppr.clear");
+graph::ImageHandle addPprClearPass(graph::RenderGraph& g, const FrameInputs& in, const std::string& name, VkExtent2D extent, const std::string& passName = "ppr.clear");
 
 }  // namespace ppr::passes

@@ -31,7 +31,7 @@ graph::ImageHandle PprReflectPass::add(graph::RenderGraph& g, const FrameInputs&
     graph::ImageHandle target = g.createImage("reflection", {in.extent.width, in.extent.height, kReflectionFormat, 1});
     // Tiles left out of the indirect dispatch hold no reflector pixel: "no reflection" (all zero),
     // exactly what the whole-screen dispatch writes there.
-    if (indirect) target = addClearPass(g, "ppr.reflection.clear", target, VkClearColorValue{});
+    if (indirect) target = addClearPass(g, in, "ppr.reflection.clear", target, VkClearColorValue{});
     graph::ImageHandle out;
     ComputePass pass(g, ctx_, "ppr.reflect", pipeline_);
     pass.uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
@@ -54,7 +54,7 @@ graph::ImageHandle PprReflectPass::add(graph::RenderGraph& g, const FrameInputs&
     if (writeDistance) push.flags |= gpu::kPprWriteDistance;
     graph::ImageHandle distanceWritten;
     // Cleared first and kept where the shader does not write (tiles outside the indirect dispatch).
-    if (writeDistance) pass.storageReadWrite(addClearPass(g, "ppr.distance.clear", *inputs.distance, VkClearColorValue{}), &distanceWritten);
+    if (writeDistance) pass.storageReadWrite(addClearPass(g, in, "ppr.distance.clear", *inputs.distance, VkClearColorValue{}), &distanceWritten);
     else pass.storageWrite(g.createImage("ppr.distance.unused", {1, 1, VK_FORMAT_R32_SFLOAT, 1}), &distanceWritten);
     pass.push(push);
     if (indirect) pass.dispatchIndirect(inputs.tiles->args, sizeof(gpu::TileDispatchArgs) * gpu::kTileClassPlanar);

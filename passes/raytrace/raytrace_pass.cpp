@@ -76,7 +76,7 @@ graph::ImageHandle RaytracePass::addScreen(graph::RenderGraph& g, const FrameInp
 
 graph::ImageHandle RaytracePass::addGlass(graph::RenderGraph& g, const FrameInputs& in, const RaytraceInputs& rt, const RaytraceGlass& glass) const {
     const uint32_t size = glass.atlasSize;
-    graph::ImageHandle atlas = addClearPass(g, "raytraced.glass.clear", g.createImage("raytraced.glass", {size, size, kReflectionFormat, 1}), {});
+    graph::ImageHandle atlas = addClearPass(g, in, "raytraced.glass.clear", g.createImage("raytraced.glass", {size, size, kReflectionFormat, 1}), {});
     if (glass.usedHeight == 0 || glass.regionCount == 0) return atlas;
     struct Data {
         graph::ImageHandle depth, shadowMap, out;

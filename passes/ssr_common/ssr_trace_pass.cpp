@@ -63,7 +63,7 @@ graph::ImageHandle SsrTracePass::addTechnique(graph::RenderGraph& g, const Frame
     if (!inputs.indirect) return trace(g, in, inputs, image, name_, all, std::nullopt, true);
     // Tiles in neither list hold no reflective pixel: "no reflection" (all zero), as the whole-screen
     // pass writes there. A tile in both lists has each pixel shaded by exactly one of the passes.
-    image = addClearPass(g, name_ + ".clear", image, VkClearColorValue{});
+    image = addClearPass(g, in, name_ + ".clear", image, VkClearColorValue{});
     image = trace(g, in, inputs, image, name_ + ".planar", 1u << gpu::kTileClassPlanar, gpu::kTileClassPlanar, false);
     return trace(g, in, inputs, image, name_ + ".other", 1u << gpu::kTileClassOther, gpu::kTileClassOther, false);
 }
