@@ -3,6 +3,7 @@
 #include "capture/capture.hpp"
 #include "cli/cli.hpp"
 #include "compare/compare.hpp"
+#include "fit/fit.hpp"
 #include "viewer/viewer.hpp"
 
 #include <cstdio>
@@ -21,6 +22,7 @@ int main(int argc, char** argv) {
         if (o.mode == Mode::View) return runViewer(o);
         if (o.mode == Mode::Compare) return runCompare(o);
         if (o.mode == Mode::Bench) return runBench(o);
+        if (o.mode == Mode::Fit) return runFit(o);
         return runCapture(o);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "ppr: error: %s\n", e.what());

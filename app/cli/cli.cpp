@@ -4,6 +4,8 @@
 #include "techniques/technique_table.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 namespace ppr::app {
@@ -22,6 +24,23 @@ uint32_t parseUnsigned(const std::string& option, const std::string& text, uint3
     if (v < lo || v > hi)
         throw std::runtime_error(option + " " + text + ": out of range (" + std::to_string(lo) + ".." + std::to_string(hi) + ")");
     return static_cast<uint32_t>(v);
+}
+
+float parseFloat(const std::string& option, const std::string& text, float lo, float hi) {
+    size_t used = 0;
+    float v = 0.0f;
+    try {
+        v = std::stof(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used != text.size() || used == 0 || !std::isfinite(v)) throw std::runtime_error(option + " " + text + ": expected a number");
+    if (v < lo || v > hi) {
+        char range[64];
+        std::snprintf(range, sizeof(range), "%g..%g", double(lo), double(hi));
+        throw std::runtime_error(option + " " + text + ": out of range (" + range + ")");
+    }
+    return v;
 }
 
 }  // namespace
@@ -65,12 +84,18 @@ static std::string referenceNames() {
 }
 
 std::string usage() {
-    return "usage: ppr [view|capture|compare|bench] [options]\n"
+    return "usage: ppr [view|capture|compare|bench|fit] [options]\n"
            "  view                 interactive window (default when a display is present)\n"
            "  capture              render headless, write final.png + report.json (default without a display)\n"
            "  compare              render techniques and the planar ground truth; write contact.png + metrics.json\n"
            "  bench                time the techniques on one camera (default: all but none; planar is the reference),\n"
            "                       against PPR and the floor, and PPR's scaling sweeps; write bench.json, bench.md, bench.png\n"
+           "  fit                  fit reflector rectangles to the scene's flat surfaces of the selected materials; print\n"
+           "                       them and write a reflector file (--out FILE, default out/<scene>.reflectors.json)\n"
+           "    --materials REGEX  fit: materials whose name matches (ECMAScript, searched)\n"
+           "    --max-roughness R  fit: materials with roughness factor <= R (with --materials: both must hold;\n"
+           "                       neither: the materials marked reflective, extras \"ppr_reflective\")\n"
+           "    --min-area A       fit: drop flat regions under A square metres (default 0.05)\n"
            "options:\n"
            "  --scene FILE         .gltf or .glb, or stress:N (N = 1..4096 mirror tiles; default: the built-in default scene)\n"
            "  --reflectors FILE    reflector JSON (default: <scene>.reflectors.json or glTF node extras)\n"
@@ -107,7 +132,8 @@ static Options parseArguments(int argc, const char* const* argv) {
         else if (m == "capture") o.mode = Mode::Capture;
         else if (m == "compare") o.mode = Mode::Compare;
         else if (m == "bench") o.mode = Mode::Bench;
-        else throw std::runtime_error("unknown command '" + m + "' (expected view, capture, compare or bench)");
+        else if (m == "fit") o.mode = Mode::Fit;
+        else throw std::runtime_error("unknown command '" + m + "' (expected view, capture, compare, bench or fit)");
     }
     auto value = [&](const std::string& opt) -> std::string {
         if (i + 1 >= argc) throw std::runtime_error(opt + ": missing value");
@@ -123,7 +149,13 @@ static Options parseArguments(int argc, const char* const* argv) {
             o.path = value(a);
             if (o.path.empty()) throw std::runtime_error("--path: expected still, strafe, dolly, orbit or a file");
         }
-        else if (a == "--out") o.out = value(a);
+        else if (a == "--out") {
+            o.out = value(a);
+            o.outGiven = true;
+        }
+        else if (a == "--materials") o.fitMaterials = value(a);
+        else if (a == "--max-roughness") o.fitMaxRoughness = parseFloat(a, value(a), 0.0f, 1.0f);
+        else if (a == "--min-area") o.fitMinArea = parseFloat(a, value(a), 0.0f, 1e10f);
         else if (a == "--validation") o.validation = true;
         else if (a == "--dump-graph") o.dumpGraph = true;
         else if (a == "--frames") o.frames = parseUnsigned(a, value(a), 1, kMaxFrames);
@@ -163,6 +195,9 @@ static Options parseArguments(int argc, const char* const* argv) {
             throw std::runtime_error("unknown option '" + a + "' (see ppr --help)");
         }
     }
+    if (o.mode != Mode::Fit && (o.fitMaterials || o.fitMaxRoughness || o.fitMinArea != Options{}.fitMinArea))
+        throw std::runtime_error("--materials, --max-roughness and --min-area belong to ppr fit");
+    if (o.mode == Mode::Fit && o.outGiven && o.out.empty()) throw std::runtime_error("--out: expected a file name");
     if (!o.path.empty() && o.mode != Mode::Capture && o.mode != Mode::Compare)
         throw std::runtime_error("--path " + o.path + ": only capture and compare render camera paths");
     if (o.mode == Mode::Bench && o.sweeps.empty()) o.sweeps = benchSweepNames();

@@ -1,6 +1,6 @@
 #pragma once
 // Command line per the DESIGN.md contract (techniques and settings from their tables):
-//   ppr [view|capture|compare|bench] [--scene F] [--reflectors F] [--camera NAME|x,y,z,yaw,pitch[,fov]]
+//   ppr [view|capture|compare|bench|fit] [--scene F] [--reflectors F] [--camera NAME|x,y,z,yaw,pitch[,fov]]
 //       [--size WxH] [--technique T] [--set key=value]... [--frames N] [--path P] [--out DIR] [--validation]
 #include "settings/settings.hpp"
 
@@ -10,7 +10,7 @@
 
 namespace ppr::app {
 
-enum class Mode { Auto, View, Capture, Compare, Bench };
+enum class Mode { Auto, View, Capture, Compare, Bench, Fit };
 
 struct Options {
     Mode mode = Mode::Auto;
@@ -25,6 +25,7 @@ struct Options {
     std::vector<std::string> sets;  // validated "key=value" assignments, in order
     uint32_t frames = 0;            // 0 = mode default
     std::string out = "out";
+    bool outGiven = false;  // fit: --out names the reflector file (default out/<scene stem>.reflectors.json)
     bool validation = false;
     bool dumpGraph = false;  // --dump-graph: write graph.dot next to the report
     bool help = false;
@@ -32,6 +33,10 @@ struct Options {
     // of the medians first.
     std::vector<std::string> sweeps;
     uint32_t warmup = 3;
+    // fit: which materials' flat regions become reflectors (app/fit/fit.hpp).
+    std::optional<std::string> fitMaterials;  // --materials REGEX
+    std::optional<float> fitMaxRoughness;     // --max-roughness R
+    float fitMinArea = 0.05f;                 // --min-area A (m²)
 };
 
 // A technique with its own settings: "ppr@normalmap=off,holes=0" (compare and bench rows, capture).

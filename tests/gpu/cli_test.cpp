@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstring>
 #include <fstream>
 
 namespace ppr::test {
@@ -32,6 +33,42 @@ TEST(Cli, CaptureEveryNamedCameraWithValidation) {
         util::Rgba8Image img = util::readPng((dir / c.name / "final.png").string());
         EXPECT_GT(lumaStdDev(img), 10.0) << c.name;
     }
+    std::filesystem::remove_all(dir);
+}
+
+// `ppr fit` on the default scene: every authored reflector and the steel post's flat top, written
+// as a file that renders (with validation) nearly as the authored one does on a camera that sees the
+// puddles, and bad selections refused with one line.
+TEST(Cli, FitWritesAReflectorFileThatRenders) {
+    auto dir = tempDir("cli-fit");
+    RunResult fit = runPpr("fit --out " + (dir / "fit.reflectors.json").string());
+    ASSERT_EQ(fit.exitCode, 0) << fit.output;
+    EXPECT_NE(fit.output.find("puddle_large"), std::string::npos) << fit.output;
+    EXPECT_NE(fit.output.find("20 reflectors"), std::string::npos) << fit.output;
+    std::vector<scene::Reflector> fitted = scene::loadReflectorFile((dir / "fit.reflectors.json").string());
+    EXPECT_EQ(fitted.size(), 20u);
+    // The fit knows shapes, not the artist's reflectance: take those from the authored file.
+    const std::filesystem::path authoredFile = std::filesystem::path(PPR_DEFAULT_SCENE_FILE).parent_path() / "default.reflectors.json";
+    for (const scene::Reflector& a : scene::loadReflectorFile(authoredFile.string()))
+        for (scene::Reflector& f : fitted)
+            if (f.name == a.name) f.reflectance = a.reflectance;
+    scene::saveReflectorFileAtomic((dir / "fit.reflectors.json").string(), fitted);
+    for (const char* which : {"fit", "authored"}) {
+        const std::string reflectors = std::string(which) == "fit" ? " --reflectors " + (dir / "fit.reflectors.json").string() : "";
+        RunResult r = runPpr("capture --validation --camera puddles --size 160x90 --frames 1" + reflectors + " --out " + (dir / which).string());
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+    }
+    const util::Rgba8Image a = util::readPng((dir / "fit" / "final.png").string());
+    const util::Rgba8Image b = util::readPng((dir / "authored" / "final.png").string());
+    ASSERT_EQ(a.pixels.size(), b.pixels.size());
+    size_t differing = 0;
+    for (size_t i = 0; i < a.pixels.size(); i += 4) differing += std::memcmp(&a.pixels[i], &b.pixels[i], 3) != 0;
+    EXPECT_LT(differing, a.pixels.size() / 4 / 100) << "more than 1 % of the pixels changed with the fitted reflectors";
+
+    RunResult none = runPpr("fit --materials nothing_matches --out " + (dir / "none.json").string());
+    EXPECT_EQ(none.exitCode, 2);
+    EXPECT_NE(none.output.find("no material selected"), std::string::npos) << none.output;
+    EXPECT_FALSE(std::filesystem::exists(dir / "none.json"));
     std::filesystem::remove_all(dir);
 }
 

@@ -41,3 +41,20 @@ TEST(CliLimits, AbsurdSizesAndFrameCountsAreRefused) {
     EXPECT_EQ(errorOf({"ppr", "capture", "--frames", "1e12"}), "--frames 1e12: expected a whole number");
     EXPECT_EQ(errorOf({"ppr", "capture", "--frames", "1000000000000"}), "--frames 1000000000000: out of range (1..100000)");
 }
+
+TEST(CliLimits, FitOptions) {
+    const ppr::app::Options o =
+        parse({"ppr", "fit", "--scene", "s.gltf", "--materials", "floor|glass", "--max-roughness", "0.3", "--min-area", "2", "--out", "r.json"});
+    EXPECT_EQ(o.mode, ppr::app::Mode::Fit);
+    EXPECT_EQ(o.fitMaterials.value_or(""), "floor|glass");
+    EXPECT_FLOAT_EQ(o.fitMaxRoughness.value_or(-1.0f), 0.3f);
+    EXPECT_FLOAT_EQ(o.fitMinArea, 2.0f);
+    EXPECT_TRUE(o.outGiven);
+    EXPECT_FALSE(parse({"ppr", "fit"}).outGiven);
+    EXPECT_EQ(errorOf({"ppr", "fit", "--max-roughness", "1.5"}), "--max-roughness 1.5: out of range (0..1)");
+    EXPECT_EQ(errorOf({"ppr", "fit", "--min-area", "nan"}), "--min-area nan: expected a number");
+    EXPECT_EQ(errorOf({"ppr", "fit", "--min-area", "1e99"}), "--min-area 1e99: expected a number");
+    EXPECT_EQ(errorOf({"ppr", "fit", "--min-area", "-1"}), "--min-area -1: out of range (0..1e+10)");
+    EXPECT_EQ(errorOf({"ppr", "capture", "--materials", "x"}), "--materials, --max-roughness and --min-area belong to ppr fit");
+    EXPECT_EQ(errorOf({"ppr", "fit", "--out", ""}), "--out: expected a file name");
+}
