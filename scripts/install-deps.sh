@@ -15,6 +15,7 @@ BOOKWORM_PKGS=(
   libgtest-dev libbenchmark-dev
   clang-14 libclang-rt-14-dev  # libFuzzer + ASan/UBSan runtimes for scripts/fuzz.sh (the fuzz preset)
   xvfb xauth xdotool x11-apps imagemagick graphviz assimp-testmodels
+  assimp-utils  # scripts/real-scene.sh: the FZK-Haus IFC model to glTF
 )
 BACKPORTS_PKGS=(mesa-vulkan-drivers)
 TRIXIE_PKGS=(libvulkan-memory-allocator-dev)
