@@ -4,6 +4,11 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$root/scripts/build.sh"
+# The Khronos glTF validator for the unit.gltf.* tests, from the npm registry at the version
+# tools/gltf-validator/package-lock.json pins (Node.js and npm are on every machine this runs on).
+if [ ! -d "$root/tools/gltf-validator/node_modules/gltf-validator" ]; then
+  npm ci --prefix "$root/tools/gltf-validator" --no-audit --no-fund
+fi
 ctest --test-dir "$root/build/release" --output-on-failure -j"$(nproc)" "$@"
 # The whole suite (no ctest arguments) ends with a short fuzz run: each libFuzzer target for
 # PPR_FUZZ_SECONDS (default 20; 0 skips) on its seeds, after replaying the saved regressions
