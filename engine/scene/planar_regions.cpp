@@ -3,13 +3,12 @@
 #include "scene/planar_regions.hpp"
 
 #include "scene/reflector_fit.hpp"
+#include "scene/vertex_weld.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <numeric>
 #include <set>
-#include <unordered_map>
 
 namespace ppr::scene {
 namespace {
@@ -22,23 +21,6 @@ struct Triangle {
     double area = 0.0;
     int material = -1;
     uint32_t draw = 0;
-};
-
-class UnionFind {
-public:
-    explicit UnionFind(size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0u); }
-    uint32_t find(uint32_t x) {
-        while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
-        return x;
-    }
-    void unite(uint32_t a, uint32_t b) {
-        a = find(a);
-        b = find(b);
-        if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-    }
-
-private:
-    std::vector<uint32_t> parent_;
 };
 
 bool coplanar(const Triangle& a, const Triangle& b, double tolerance) {
@@ -85,35 +67,14 @@ std::string regionName(const Scene& scene, const Triangle& t) {
 
 PlanarRegionResult fitPlanarRegions(const Scene& scene, const PlanarRegionOptions& o) {
     const std::vector<Triangle> tris = selectedTriangles(scene, o);
+    // Triangles sharing a (welded) vertex join when they have the same material and are coplanar.
     UnionFind uf(tris.size());
-
-    // Weld: a hash grid of cell size = weld distance; each vertex meets the earlier ones nearby.
-    struct Key {
-        int64_t x, y, z;
-        bool operator==(const Key&) const = default;
-    };
-    struct KeyHash {
-        size_t operator()(const Key& k) const { return size_t(k.x * 73856093LL) ^ size_t(k.y * 19349663LL) ^ size_t(k.z * 83492791LL); }
-    };
-    const double weld = kRegionWeldDistance;
-    std::unordered_map<Key, std::vector<uint32_t>, KeyHash> grid;  // cell -> vertex ids (triangle * 3 + corner)
-    grid.reserve(tris.size() * 3);
-    for (uint32_t v = 0; v < tris.size() * 3; ++v) {
-        const dvec3& p = tris[v / 3].v[v % 3];
-        const Key c{int64_t(std::floor(p.x / weld)), int64_t(std::floor(p.y / weld)), int64_t(std::floor(p.z / weld))};
-        for (int64_t dx = -1; dx <= 1; ++dx)
-            for (int64_t dy = -1; dy <= 1; ++dy)
-                for (int64_t dz = -1; dz <= 1; ++dz) {
-                    const auto it = grid.find(Key{c.x + dx, c.y + dy, c.z + dz});
-                    if (it == grid.end()) continue;
-                    for (uint32_t w : it->second) {
-                        const Triangle &a = tris[w / 3], &b = tris[v / 3];
-                        if (w / 3 == v / 3 || a.material != b.material || glm::length(a.v[w % 3] - p) > weld) continue;
-                        if (uf.find(w / 3) != uf.find(v / 3) && coplanar(a, b, o.planeTolerance)) uf.unite(w / 3, v / 3);
-                    }
-                }
-        grid[c].push_back(v);
-    }
+    forEachWeldedPair(
+        tris.size() * 3, [&](uint32_t v) { return tris[v / 3].v[v % 3]; }, kRegionWeldDistance, [&](uint32_t w, uint32_t v) {
+            const Triangle &a = tris[w / 3], &b = tris[v / 3];
+            if (w / 3 != v / 3 && a.material == b.material && uf.find(w / 3) != uf.find(v / 3) && coplanar(a, b, o.planeTolerance))
+                uf.unite(w / 3, v / 3);
+        });
 
     std::map<uint32_t, std::vector<uint32_t>> regions;  // root -> triangles, in first-triangle order
     std::map<uint32_t, uint32_t> drawTriangles;         // draw -> its selected triangles

@@ -2,13 +2,13 @@
 // region growing and the whole-scene automatic fit. Computations run in double precision.
 #include "scene/reflector_fit.hpp"
 
+#include "scene/vertex_weld.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <numeric>
 #include <string>
-#include <unordered_map>
 
 namespace ppr::scene {
 
@@ -129,20 +129,6 @@ double pointTriangleDistance(const dvec3& p, const dvec3& a, const dvec3& b, con
     return glm::length(p - (a + ab * (vb * denom) + ac * (vc * denom)));
 }
 
-struct UnionFind {
-    std::vector<uint32_t> parent;
-    explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-    uint32_t find(uint32_t x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-    }
-    void unite(uint32_t a, uint32_t b) {
-        a = find(a);
-        b = find(b);
-        if (a != b) parent[std::max(a, b)] = std::min(a, b);
-    }
-};
-
 }  // namespace
 
 std::optional<Reflector> fitReflector(const std::vector<glm::vec3>& tris, float planeTolerance) {
@@ -262,34 +248,10 @@ std::optional<Reflector> fitPlanarRegion(const Scene& scene, const glm::vec3& po
         }
     }
 
-    // Connectivity: vertices welded by position through a hash grid of cell size = weld distance.
-    const double weld = kRegionWeldDistance;
-    struct Key {
-        int64_t x, y, z;
-        bool operator==(const Key&) const = default;
-    };
-    struct KeyHash {
-        size_t operator()(const Key& k) const {
-            return size_t(k.x * 73856093LL) ^ size_t(k.y * 19349663LL) ^ size_t(k.z * 83492791LL);
-        }
-    };
-    std::unordered_map<Key, std::vector<uint32_t>, KeyHash> grid;  // cell -> vertex ids
-    auto cell = [&](const glm::vec3& p) {
-        return Key{int64_t(std::floor(p.x / weld)), int64_t(std::floor(p.y / weld)), int64_t(std::floor(p.z / weld))};
-    };
+    // Connectivity: candidates sharing a vertex position (welded) are one region.
     UnionFind uf(count);
-    for (uint32_t v = 0; v < cand.size(); ++v) {
-        const Key c = cell(cand[v]);
-        for (int64_t dx = -1; dx <= 1; ++dx)
-            for (int64_t dy = -1; dy <= 1; ++dy)
-                for (int64_t dz = -1; dz <= 1; ++dz) {
-                    const auto it = grid.find(Key{c.x + dx, c.y + dy, c.z + dz});
-                    if (it == grid.end()) continue;
-                    for (uint32_t w : it->second)
-                        if (glm::length(dvec3(cand[w]) - dvec3(cand[v])) <= weld) uf.unite(w / 3, v / 3);
-                }
-        grid[c].push_back(v);
-    }
+    forEachWeldedPair(
+        cand.size(), [&](uint32_t v) { return dvec3(cand[v]); }, kRegionWeldDistance, [&](uint32_t w, uint32_t v) { uf.unite(w / 3, v / 3); });
 
     std::vector<glm::vec3> region;
     const uint32_t root = uf.find(uint32_t(seed));
