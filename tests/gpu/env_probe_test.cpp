@@ -62,6 +62,7 @@ TEST(EnvironmentProbe, SourceChangesNothingWithoutTheFallback) {
 // whose misses see most of the courtyard's walls (docs/normalmaps.md, "What it gains"). Measured at
 // 320x180: ppr sky 18.62 dB, probe 20.93 dB; ssr-hiz 19.44, 22.20 dB.
 TEST(EnvironmentProbe, BeatsTheSkyAgainstTheRayTracedReference) {
+    PPR_SKIP_WITHOUT_RAY_QUERY();
     GpuFixture f;
     const char* camera = "normalmap";
     const app::FloatImage all = app::allReflectorPixels(render(f, "raytraced", camera, false, "probe").reflection);

@@ -14,6 +14,20 @@
 
 namespace ppr::test {
 
+// Why this machine's device cannot run the `raytraced` reference ("" when it can; lavapipe can): its
+// tests skip with that reason on a GPU driver without VK_KHR_ray_query instead of failing.
+inline const std::string& rayQueryMissing() {
+    static const std::string why = [] {
+        vk::ContextOptions o;
+        return vk::Context::create(o)->rayQueryUnavailableReason();
+    }();
+    return why;
+}
+#define PPR_SKIP_WITHOUT_RAY_QUERY()                                                            \
+    do {                                                                                        \
+        if (!::ppr::test::rayQueryMissing().empty()) GTEST_SKIP() << ::ppr::test::rayQueryMissing(); \
+    } while (0)
+
 struct GpuFixture {
     std::unique_ptr<vk::Context> ctx;
     scene::Scene scene;

@@ -95,6 +95,7 @@ namespace {
 // Against the ray-traced reference (mapped normals) on the normal-mapped camera, over the pixels
 // every PPR mode has a reflection for: what the approximation itself gets right, holes aside.
 TEST(NormalMaps, ApproximationAgainstTheRayTracedReference) {
+    PPR_SKIP_WITHOUT_RAY_QUERY();
     GpuFixture f;
     const app::FloatImage truth = reflection(f, "raytraced", "normalmap", "raymarch", false);
     const float exposure = f.headless->settings().values().view.exposure;
