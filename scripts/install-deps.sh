@@ -16,6 +16,7 @@ BOOKWORM_PKGS=(
   clang-14 libclang-rt-14-dev  # libFuzzer + ASan/UBSan runtimes for scripts/fuzz.sh (the fuzz preset)
   xvfb xauth xdotool x11-apps imagemagick graphviz assimp-testmodels
   assimp-utils  # scripts/real-scene.sh: the FZK-Haus IFC model to glTF
+  time  # scripts/scale-scene.sh: load time and peak memory
 )
 BACKPORTS_PKGS=(mesa-vulkan-drivers)
 TRIXIE_PKGS=(libvulkan-memory-allocator-dev)

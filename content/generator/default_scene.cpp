@@ -93,16 +93,7 @@ public:
         worldReflectors.push_back(world);
     }
 
-    // Camera node with rotation R_y(−yaw)·R_x(pitch): local −Z then looks along
-    // (sin yaw·cos pitch, sin pitch, −cos yaw·cos pitch).
-    void camera(const std::string& name, const glm::dvec3& pos, double yawDeg, double pitchDeg) {
-        NodeDesc n;
-        n.name = name;
-        n.camera = w_.addCamera(name, 60.0 * kDeg);
-        n.translation = pos;
-        n.rotation = glm::angleAxis(-yawDeg * kDeg, glm::dvec3(0, 1, 0)) * glm::angleAxis(pitchDeg * kDeg, glm::dvec3(1, 0, 0));
-        w_.addNode(n);
-    }
+    void camera(const std::string& name, const glm::dvec3& pos, double yawDeg, double pitchDeg) { w_.addCameraNode(name, pos, yawDeg, pitchDeg); }
 
     std::vector<ReflectorDesc> worldReflectors;
 

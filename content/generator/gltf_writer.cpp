@@ -61,6 +61,16 @@ int GltfWriter::addMesh(const MeshData& mesh, int material) {
     return static_cast<int>(meshes_.size() - 1);
 }
 
+int GltfWriter::addCameraNode(const std::string& name, const glm::dvec3& position, double yawDeg, double pitchDeg) {
+    constexpr double kDeg = 3.14159265358979323846 / 180.0;
+    NodeDesc n;
+    n.name = name;
+    n.camera = addCamera(name, 60.0 * kDeg);
+    n.translation = position;
+    n.rotation = glm::angleAxis(-yawDeg * kDeg, glm::dvec3(0, 1, 0)) * glm::angleAxis(pitchDeg * kDeg, glm::dvec3(1, 0, 0));
+    return addNode(n);
+}
+
 int GltfWriter::addCamera(const std::string& name, double yfovRadians) {
     Json perspective;
     perspective["aspectRatio"] = num(16.0 / 9.0);

@@ -44,6 +44,9 @@ public:
     int addMaterial(const MaterialDesc& m);
     int addMesh(const MeshData& mesh, int material);
     int addCamera(const std::string& name, double yfovRadians);
+    // A 60° camera on a node with rotation R_y(−yaw)·R_x(pitch): local −Z then looks along
+    // (sin yaw·cos pitch, sin pitch, −cos yaw·cos pitch), the --camera convention.
+    int addCameraNode(const std::string& name, const glm::dvec3& position, double yawDeg, double pitchDeg);
     int addNode(const NodeDesc& node);
     void setSceneExtras(Json extras) { sceneExtras_ = std::move(extras); }
     const MeshData& mesh(int index) const { return meshes_[static_cast<size_t>(index)]; }

@@ -28,8 +28,11 @@ for (const file of files) {
     externalResourceFunction: (uri) => readFile(path.resolve(path.dirname(file), decodeURIComponent(uri))).then((b) => new Uint8Array(b)),
   });
   const issues = report.issues;
+  const info = report.info ?? {};
+  const images = (info.resources ?? []).filter((r) => r.image).length;
   console.log(`gltf-validator ${report.validatorVersion}: ${file}: ${issues.numErrors} errors, ${issues.numWarnings} warnings, ` +
-              `${issues.numInfos} infos, ${issues.numHints} hints`);
+              `${issues.numInfos} infos, ${issues.numHints} hints; ${info.totalTriangleCount ?? 0} triangles, ` +
+              `${info.materialCount ?? 0} materials, ${images} images, ${info.drawCallCount ?? 0} draw calls`);
   for (const m of issues.messages) {
     if (m.severity === 0 || (showWarnings && m.severity === 1))
       console.log(`  ${m.severity === 0 ? 'error' : 'warning'} ${m.code} at ${m.pointer ?? '(file)'}: ${m.message}`);
