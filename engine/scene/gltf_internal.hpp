@@ -7,8 +7,10 @@
 
 #include <cstddef>
 #include <map>
+#include <memory>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace ppr::scene::detail {
 
@@ -22,7 +24,8 @@ struct GltfFile {
 // --- accessors (gltf_accessors.cpp): every range is checked before a byte is read.
 enum class AccessorKind { Vec3Float, Vec4Float, TexCoord, Index };
 struct AccessorView {
-    const unsigned char* data = nullptr;
+    const unsigned char* data = nullptr;  // into the glTF buffer, or into `owned`
+    std::shared_ptr<const std::vector<unsigned char>> owned;  // a sparse accessor's elements, materialised
     size_t count = 0, stride = 0;
     int componentType = 0, components = 0;
     bool normalized = false;

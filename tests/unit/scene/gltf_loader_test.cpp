@@ -250,13 +250,21 @@ INSTANTIATE_TEST_SUITE_P(
         Variant{"MissingPosition", [](json& d) { d["meshes"][1]["primitives"][0]["attributes"].erase("POSITION"); }, {"PlainQuad", "POSITION: missing"}},
         Variant{"AccessorIndexOutOfRange", [](json& d) { d["meshes"][1]["primitives"][0]["attributes"]["TEXCOORD_0"] = 99; },
                 {"PlainQuad", "TEXCOORD_0", "accessor 99 out of range"}},
-        Variant{"Sparse",
+        Variant{"SparseIndicesNotIncreasing",  // bufferView 3 holds the quad's triangle indices, which repeat
                 [](json& d) {
-                    d["accessors"][0]["sparse"] = {{"count", 1},
+                    d["accessors"][0]["sparse"] = {{"count", 4},
                                                    {"indices", {{"bufferView", 3}, {"componentType", 5123}}},
                                                    {"values", {{"bufferView", 0}}}};
                 },
-                {"POSITION", "sparse"}},
+                {"POSITION", "sparse: index 2 (entry 2) is out of range or not increasing"}},
+        Variant{"SparseValuesPastView",
+                [](json& d) {
+                    d["accessors"][0]["sparse"] = {{"count", 3},
+                                                   {"indices", {{"bufferView", 3}, {"componentType", 5123}}},
+                                                   {"values", {{"bufferView", 3}}}};
+                },
+                {"POSITION", "sparse: values: needs 36 bytes"}},
+        Variant{"NoBufferViewNotSparse", [](json& d) { d["accessors"][0].erase("bufferView"); }, {"POSITION", "has no bufferView and is not sparse"}},
         Variant{"MaterialOutOfRange", [](json& d) { d["meshes"][0]["primitives"][0]["material"] = 9; }, {"ReflectiveQuad", "material 9 out of range"}},
         Variant{"TextureOutOfRange", [](json& d) { d["materials"][1]["pbrMetallicRoughness"]["baseColorTexture"]["index"] = 5; },
                 {"material 'Painted' baseColorTexture", "texture 5 out of range"}},
@@ -303,6 +311,73 @@ TEST(Gltf, NonFinitePositionsRejected) {
     doc["buffers"][0]["uri"] = prefix + base64(bytes);
     const std::string path = writeGltf(dir, doc);
     expectError([&] { loadGltf(path); }, {path, "mesh 'ReflectiveQuad' primitive 0: POSITION contains non-finite values"});
+}
+
+// Sparse accessors (spec 3.6.2.3): vertex 2 of the reflective quad moved by a sparse substitution
+// over its bufferView, and a base of zeros where the accessor has no bufferView.
+TEST(Gltf, SparseAccessorsReplaceElements) {
+    for (const bool zeroBase : {false, true}) {
+        TempDir dir;
+        json doc = quadJson();
+        std::string uri = doc["buffers"][0]["uri"];
+        const std::string prefix = uri.substr(0, uri.find(',') + 1);
+        std::vector<uint8_t> bytes = unbase64(uri.substr(prefix.size()));
+        const size_t indexAt = bytes.size();
+        const uint16_t index = 2;
+        bytes.resize(indexAt + 4);
+        std::memcpy(&bytes[indexAt], &index, 2);
+        const float value[3] = {0.25f, 5.0f, -0.5f};
+        const size_t valueAt = bytes.size();
+        bytes.resize(valueAt + 12);
+        std::memcpy(&bytes[valueAt], value, 12);
+        doc["buffers"][0]["uri"] = prefix + base64(bytes);
+        doc["buffers"][0]["byteLength"] = bytes.size();
+        doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", indexAt}, {"byteLength", 2}});
+        doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", valueAt}, {"byteLength", 12}});
+        const int views = int(doc["bufferViews"].size());
+        json& positions = doc["accessors"][0];
+        if (zeroBase) positions.erase("bufferView");
+        positions["max"] = {1, 5, 1};
+        positions["sparse"] = {{"count", 1},
+                               {"indices", {{"bufferView", views - 2}, {"componentType", 5123}}},
+                               {"values", {{"bufferView", views - 1}}}};
+        const Scene s = loadGltf(writeGltf(dir, doc));
+        const Mesh& quad = s.meshes[s.draws[0].mesh];
+        SCOPED_TRACE(zeroBase ? "zero base" : "bufferView base");
+        expectVec(s.vertices[size_t(quad.vertexOffset) + 2].position, {0.25f, 5.0f, -0.5f});
+        const glm::vec3 first = s.vertices[size_t(quad.vertexOffset)].position;
+        if (zeroBase) expectVec(first, {0, 0, 0});
+        else expectVec(first, {-1, 0, -1});
+    }
+}
+
+// KHR_materials_pbrSpecularGlossiness → metal/rough (Debian's assimp test model; it also carries a
+// metal/rough fallback with roughness 1, which the extension overrides).
+TEST(Gltf, SpecularGlossinessBecomesMetalRough) {
+    const Scene s = loadGltf("/usr/share/assimp/models/glTF2/BoxTextured-glTF-pbrSpecularGlossiness/BoxTextured.gltf");
+    ASSERT_EQ(s.materials.size(), 1u);
+    const Material& m = s.materials[0];
+    EXPECT_FLOAT_EQ(m.roughnessFactor, 0.0f);  // glossiness 1
+    EXPECT_NEAR(m.metallicFactor, 0.167f, 0.002f);  // diffuse 1, specular 0.2: Khronos' solveMetallic
+    EXPECT_GE(m.baseColorTexture, 0);             // the diffuse texture
+    EXPECT_EQ(m.metallicRoughnessTexture, -1);
+
+    // A specular-glossiness texture becomes a roughness texture: G = 1 − glossiness · A.
+    TempDir dir;
+    json doc = quadJson();
+    doc["materials"][1]["extensions"]["KHR_materials_pbrSpecularGlossiness"] = {
+        {"diffuseFactor", {0.5, 0.5, 0.5, 1.0}}, {"specularFactor", {0.04, 0.04, 0.04}}, {"glossinessFactor", 0.5},
+        {"specularGlossinessTexture", {{"index", 0}}}};
+    const Scene q = loadGltf(writeGltf(dir, doc));
+    const Material& painted = q.materials[1];
+    EXPECT_FLOAT_EQ(painted.metallicFactor, 0.0f);  // dielectric specular
+    EXPECT_FLOAT_EQ(painted.roughnessFactor, 1.0f);
+    ASSERT_GE(painted.metallicRoughnessTexture, 0);
+    const TextureImage& rough = q.textures[size_t(painted.metallicRoughnessTexture)];
+    EXPECT_FALSE(rough.srgb);
+    EXPECT_EQ(rough.rgba8[1], uint8_t(std::lround(255.0f * (1.0f - 0.5f * 1.0f))));  // opaque texel: A = 255
+    doc["materials"][1]["extensions"]["KHR_materials_pbrSpecularGlossiness"]["specularFactor"] = {1, 2};
+    expectError([&] { loadGltf(writeGltf(dir, doc, "bad.gltf")); }, {"material 'Painted' KHR_materials_pbrSpecularGlossiness: specularFactor: expected 3 numbers"});
 }
 
 TEST(Gltf, PointsAndLinesAreSkipped) {
