@@ -2,7 +2,9 @@
 #include "scene/errors.hpp"
 #include "scene/gltf_internal.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace ppr::scene::detail {
 
@@ -67,6 +69,79 @@ struct TextureCache {
     }
 };
 
+// KHR_materials_pbrSpecularGlossiness (older exporters, assimp among them, still write it) as metal/rough,
+// the way Khronos' converter does it for the factors: roughness = 1 − glossiness; metallic from the
+// diffuse and specular brightness; base colour blended between the diffuse and specular readings.
+// The diffuse texture becomes the base colour texture; a specular-glossiness texture becomes a
+// roughness texture (G = 1 − glossiness · A), its specular colour ignored.
+float perceivedBrightness(const glm::vec3& c) { return std::sqrt(0.299f * c.r * c.r + 0.587f * c.g * c.g + 0.114f * c.b * c.b); }
+
+float solveMetallic(float diffuse, float specular, float oneMinusSpecularStrength) {
+    constexpr float kDielectricSpecular = 0.04f;
+    if (specular < kDielectricSpecular) return 0.0f;
+    const float a = kDielectricSpecular;
+    const float b = diffuse * oneMinusSpecularStrength / (1.0f - kDielectricSpecular) + specular - 2.0f * kDielectricSpecular;
+    const float c = kDielectricSpecular - specular;
+    const float d = std::max(b * b - 4.0f * a * c, 0.0f);
+    return std::clamp((-b + std::sqrt(d)) / (2.0f * a), 0.0f, 1.0f);
+}
+
+std::vector<double> numbers(const tinygltf::Value& object, const char* key, size_t count, const std::string& what) {
+    if (!object.Has(key)) return {};
+    const tinygltf::Value& v = object.Get(key);
+    if (!v.IsArray() || v.ArrayLen() != count) fail(what + ": " + key + ": expected " + std::to_string(count) + " numbers");
+    std::vector<double> out;
+    for (size_t i = 0; i < count; ++i) {
+        if (!v.Get(int(i)).IsNumber()) fail(what + ": " + key + ": expected " + std::to_string(count) + " numbers");
+        out.push_back(v.Get(int(i)).GetNumberAsDouble());
+    }
+    return out;
+}
+
+int textureIndex(const tinygltf::Value& object, const char* key, const std::string& what) {
+    if (!object.Has(key)) return -1;
+    const tinygltf::Value& t = object.Get(key);
+    if (!t.IsObject() || !t.Has("index") || !t.Get("index").IsInt()) fail(what + ": " + key + ": expected {\"index\": N}");
+    return t.Get("index").Get<int>();
+}
+
+void applySpecularGlossiness(const tinygltf::Value& ext, Material& mat, TextureCache& textures, Scene& scene, const std::string& what) {
+    if (!ext.IsObject()) fail(what + ": expected an object");
+    const std::vector<double> d = numbers(ext, "diffuseFactor", 4, what), sp = numbers(ext, "specularFactor", 3, what);
+    const glm::vec4 diffuse = d.empty() ? glm::vec4(1.0f) : glm::vec4(float(d[0]), float(d[1]), float(d[2]), float(d[3]));
+    const glm::vec3 specular = sp.empty() ? glm::vec3(1.0f) : glm::vec3(float(sp[0]), float(sp[1]), float(sp[2]));
+    const float glossiness = ext.Has("glossinessFactor") && ext.Get("glossinessFactor").IsNumber()
+                                 ? float(ext.Get("glossinessFactor").GetNumberAsDouble())
+                                 : 1.0f;
+    for (float f : {diffuse.r, diffuse.g, diffuse.b, diffuse.a, specular.r, specular.g, specular.b, glossiness})
+        if (!std::isfinite(f)) fail(what + ": non-finite factor");
+    const float specularStrength = std::max({specular.r, specular.g, specular.b});
+    const float metallic = solveMetallic(perceivedBrightness(glm::vec3(diffuse)), perceivedBrightness(specular), 1.0f - specularStrength);
+    const glm::vec3 fromDiffuse = glm::vec3(diffuse) * (1.0f - specularStrength) / (1.0f - 0.04f) / std::max(1.0f - metallic, 1e-4f);
+    const glm::vec3 fromSpecular = (specular - glm::vec3(0.04f * (1.0f - metallic))) / std::max(metallic, 1e-4f);
+    mat.baseColorFactor = glm::vec4(glm::clamp(glm::mix(fromDiffuse, fromSpecular, metallic * metallic), 0.0f, 1.0f), diffuse.a);
+    mat.metallicFactor = metallic;
+    mat.roughnessFactor = std::clamp(1.0f - glossiness, 0.0f, 1.0f);
+    mat.baseColorTexture = textures.get(textureIndex(ext, "diffuseTexture", what), true, what + " diffuseTexture");
+    mat.metallicRoughnessTexture = -1;
+    if (const int sg = textureIndex(ext, "specularGlossinessTexture", what); sg >= 0) {
+        // Decoded linear, then rewritten per texel: roughness in G, metallic (the factor) in B.
+        const TextureImage& source = scene.textures[size_t(textures.get(sg, false, what + " specularGlossinessTexture"))];
+        TextureImage rough = source;
+        rough.name = source.name + " (roughness from glossiness)";
+        for (size_t p = 0; p < size_t(rough.width) * rough.height; ++p) {
+            const float gloss = glossiness * float(source.rgba8[p * 4 + 3]) / 255.0f;
+            rough.rgba8[p * 4 + 0] = 255;
+            rough.rgba8[p * 4 + 1] = uint8_t(std::lround(255.0f * std::clamp(1.0f - gloss, 0.0f, 1.0f)));
+            rough.rgba8[p * 4 + 2] = 255;
+            rough.rgba8[p * 4 + 3] = 255;
+        }
+        scene.textures.push_back(std::move(rough));
+        mat.metallicRoughnessTexture = int(scene.textures.size() - 1);
+        mat.roughnessFactor = 1.0f;  // the texture holds it
+    }
+}
+
 }  // namespace
 
 void loadMaterials(const GltfFile& file, Scene& scene) {
@@ -93,6 +168,9 @@ void loadMaterials(const GltfFile& file, Scene& scene) {
         mat.baseColorTexture = textures.get(pbr.baseColorTexture.index, true, what + " baseColorTexture");
         mat.normalTexture = textures.get(gm.normalTexture.index, false, what + " normalTexture");
         mat.metallicRoughnessTexture = textures.get(pbr.metallicRoughnessTexture.index, false, what + " metallicRoughnessTexture");
+
+        if (const auto ext = gm.extensions.find("KHR_materials_pbrSpecularGlossiness"); ext != gm.extensions.end())
+            applySpecularGlossiness(ext->second, mat, textures, scene, what + " KHR_materials_pbrSpecularGlossiness");
 
         if (gm.extras.Has("ppr_reflective")) {
             const tinygltf::Value& flag = gm.extras.Get("ppr_reflective");
