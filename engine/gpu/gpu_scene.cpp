@@ -86,10 +86,12 @@ GpuScene::GpuScene(const vk::Context& ctx, const scene::Scene& scene, VkSampler 
         g.baseColorTex = tex(m.baseColorTexture);
         g.normalTex = tex(m.normalTexture);
         g.metalRoughTex = tex(m.metallicRoughnessTexture);
+        g.uvRow0 = glm::vec4(m.uvRow0, 0.0f);
+        g.uvRow1 = glm::vec4(m.uvRow1, 0.0f);
         materials.push_back(g);
     }
     // Default material (for primitives without one) sits at the end.
-    MaterialData fallback{glm::vec4(0.8f), 0.0f, 0.8f, 1.0f, 0u, kNoTexture, kNoTexture, kNoTexture, 0u};
+    MaterialData fallback{glm::vec4(0.8f), 0.0f, 0.8f, 1.0f, 0u, kNoTexture, kNoTexture, kNoTexture, 0u, glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0)};
     materials.push_back(fallback);
     materials_ = uploadBuffer(ctx, materials.data(), materials.size() * sizeof(MaterialData), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                               "scene materials");

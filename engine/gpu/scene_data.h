@@ -23,6 +23,9 @@ struct MaterialData {
     uint normalTex;
     uint metalRoughTex;
     uint pad0;
+    // KHR_texture_transform as the two rows of a 2x3 matrix: uv' = (dot(row0, (uv, 1)), dot(row1, (uv, 1))).
+    vec4 uvRow0;  // xyz used; identity (1, 0, 0)
+    vec4 uvRow1;  // identity (0, 1, 0)
 };
 
 // scene::Vertex as shaders that read the vertex buffer as storage see it (the ray-traced reference's
@@ -44,10 +47,19 @@ struct DrawPush {
 PPR_END
 PPR_SIZE_CHECK(DrawData, 144);
 PPR_SIZE_CHECK(VertexData, 48);
-PPR_SIZE_CHECK(MaterialData, 48);
+PPR_SIZE_CHECK(MaterialData, 80);
 PPR_SIZE_CHECK(DrawPush, 16);
 
 PPR_CONST(uint, kNoTexture, 0xFFFFFFFFu)
+
+PPR_BEGIN
+// A material's texture coordinates (the identity leaves uv bit for bit as it was).
+PPR_INLINE vec2 materialUv(MaterialData m, vec2 uv) {
+    return vec2(dot(vec3(m.uvRow0), vec3(uv, 1.0f)), dot(vec3(m.uvRow1), vec3(uv, 1.0f)));
+}
+// A difference of texture coordinates (a footprint's derivative) under the same transform.
+PPR_INLINE vec2 materialUvDelta(MaterialData m, vec2 d) { return vec2(dot(vec2(m.uvRow0), d), dot(vec2(m.uvRow1), d)); }
+PPR_END
 PPR_CONST(uint, kMaterialReflective, 1u)
 PPR_CONST(uint, kMaterialTransparent, 2u)  // glTF alphaMode BLEND: the glass forward pass draws it
 

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
+#include <optional>
 #include <vector>
 
 namespace ppr::scene::detail {
@@ -142,6 +144,30 @@ void applySpecularGlossiness(const tinygltf::Value& ext, Material& mat, TextureC
     }
 }
 
+// KHR_texture_transform of one textureInfo as the rows of uv' = T·R·S·(uv, 1) (the extension's
+// matrix: rotation counter-clockwise in UV space), or nothing when the textureInfo has none.
+struct UvTransform {
+    glm::vec3 row0{1.0f, 0.0f, 0.0f}, row1{0.0f, 1.0f, 0.0f};
+    bool operator==(const UvTransform&) const = default;
+};
+std::optional<UvTransform> textureTransform(const tinygltf::ExtensionMap& extensions, const std::string& what) {
+    const auto it = extensions.find("KHR_texture_transform");
+    if (it == extensions.end()) return std::nullopt;
+    const std::string where = what + " KHR_texture_transform";
+    const tinygltf::Value& t = it->second;
+    if (!t.IsObject()) fail(where + ": expected an object");
+    const std::vector<double> offset = numbers(t, "offset", 2, where), scale = numbers(t, "scale", 2, where);
+    const double rotation = t.Has("rotation") && t.Get("rotation").IsNumber() ? t.Get("rotation").GetNumberAsDouble() : 0.0;
+    const glm::vec2 o = offset.empty() ? glm::vec2(0.0f) : glm::vec2(float(offset[0]), float(offset[1]));
+    const glm::vec2 s = scale.empty() ? glm::vec2(1.0f) : glm::vec2(float(scale[0]), float(scale[1]));
+    for (float f : {o.x, o.y, s.x, s.y, float(rotation)})
+        if (!std::isfinite(f)) fail(where + ": non-finite value");
+    if (t.Has("texCoord") && t.Get("texCoord").IsInt() && t.Get("texCoord").Get<int>() != 0)
+        std::cerr << where << ": texCoord " << t.Get("texCoord").Get<int>() << " ignored (only TEXCOORD_0 is read)\n";
+    const float c = float(std::cos(rotation)), sn = float(std::sin(rotation));
+    return UvTransform{{c * s.x, sn * s.y, o.x}, {-sn * s.x, c * s.y, o.y}};
+}
+
 }  // namespace
 
 void loadMaterials(const GltfFile& file, Scene& scene) {
@@ -168,6 +194,22 @@ void loadMaterials(const GltfFile& file, Scene& scene) {
         mat.baseColorTexture = textures.get(pbr.baseColorTexture.index, true, what + " baseColorTexture");
         mat.normalTexture = textures.get(gm.normalTexture.index, false, what + " normalTexture");
         mat.metallicRoughnessTexture = textures.get(pbr.metallicRoughnessTexture.index, false, what + " metallicRoughnessTexture");
+
+        // One transform per material: the first textureInfo's that has one; a different one on another
+        // texture is reported and not applied.
+        std::optional<UvTransform> uv;
+        const std::pair<const tinygltf::ExtensionMap*, const char*> infos[] = {{&pbr.baseColorTexture.extensions, "baseColorTexture"},
+                                                                               {&pbr.metallicRoughnessTexture.extensions, "metallicRoughnessTexture"},
+                                                                               {&gm.normalTexture.extensions, "normalTexture"}};
+        for (const auto& [extensions, slot] : infos)
+            if (std::optional<UvTransform> t = textureTransform(*extensions, what + " " + slot)) {
+                if (!uv) uv = t;
+                else if (!(*t == *uv)) std::cerr << what << " " << slot << ": KHR_texture_transform differs from the material's first one; that one is used\n";
+            }
+        if (uv) {
+            mat.uvRow0 = uv->row0;
+            mat.uvRow1 = uv->row1;
+        }
 
         if (const auto ext = gm.extensions.find("KHR_materials_pbrSpecularGlossiness"); ext != gm.extensions.end())
             applySpecularGlossiness(ext->second, mat, textures, scene, what + " KHR_materials_pbrSpecularGlossiness");

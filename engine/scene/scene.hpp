@@ -36,6 +36,8 @@ struct Material {
     int baseColorTexture = -1;          // index into Scene::textures
     int normalTexture = -1;
     int metallicRoughnessTexture = -1;  // glTF: G = roughness, B = metallic
+    // KHR_texture_transform (one per material: every texture uses it): uv' = (row0 · (uv, 1), row1 · (uv, 1)).
+    glm::vec3 uvRow0{1.0f, 0.0f, 0.0f}, uvRow1{0.0f, 1.0f, 0.0f};
     bool reflective = false;            // material extras {"ppr_reflective": true}
     bool transparent = false;           // glTF alphaMode "BLEND": glass, drawn by the glass forward pass
                                         // (base colour = tint, alpha = how strongly it tints)

@@ -24,15 +24,16 @@ layout(location = 1) out vec4 outAlbedo;
 layout(location = 2) out vec4 outMaterial;
 layout(location = 3) out uint outReflector;
 
-vec4 sampleOr(uint tex, vec4 fallback) {
-    return tex == kNoTexture ? fallback : texture(textures[nonuniformEXT(tex)], vUv);
+vec4 sampleOr(uint tex, vec2 uv, vec4 fallback) {
+    return tex == kNoTexture ? fallback : texture(textures[nonuniformEXT(tex)], uv);
 }
 
 void main() {
     DrawData d = draws[vDraw];
     MaterialData m = materials[d.material];
-    vec4 base = m.baseColor * sampleOr(m.baseColorTex, vec4(1.0));
-    vec4 mr = sampleOr(m.metalRoughTex, vec4(1.0));
+    vec2 uv = materialUv(m, vUv);
+    vec4 base = m.baseColor * sampleOr(m.baseColorTex, uv, vec4(1.0));
+    vec4 mr = sampleOr(m.metalRoughTex, uv, vec4(1.0));
 
     // Two-sided: flip the geometric frame for back faces so thin panels light correctly. A mirrored
     // view (planar reference) reverses winding, so there the back-facing side is the front.
@@ -43,7 +44,7 @@ void main() {
         if (dot(t, t) > 1e-12) {
             t = normalize(t);
             vec3 b = cross(n, t) * (vTangent.w < 0.0 ? -1.0 : 1.0);
-            vec3 tn = texture(textures[nonuniformEXT(m.normalTex)], vUv).xyz * 2.0 - 1.0;
+            vec3 tn = texture(textures[nonuniformEXT(m.normalTex)], uv).xyz * 2.0 - 1.0;
             tn.xy *= m.normalScale;
             n = normalize(t * tn.x + b * tn.y + n * max(tn.z, 1e-3));
         }

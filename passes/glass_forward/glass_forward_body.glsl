@@ -34,7 +34,7 @@ layout(location = 0, index = 1) out vec4 outFilter;
 void main() {
     DrawData d = draws[vDraw];
     MaterialData m = materials[d.material];
-    vec4 base = m.baseColor * (m.baseColorTex == kNoTexture ? vec4(1.0) : texture(textures[nonuniformEXT(m.baseColorTex)], vUv));
+    vec4 base = m.baseColor * (m.baseColorTex == kNoTexture ? vec4(1.0) : texture(textures[nonuniformEXT(m.baseColorTex)], materialUv(m, vUv)));
     vec3 world = worldFromDepth(gl_FragCoord.xy * frame.invScreenSize, gl_FragCoord.z);
     vec3 v = normalize(frame.cameraPos.xyz - world);
     vec3 n = normalize(vNormal);

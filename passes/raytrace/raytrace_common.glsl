@@ -208,6 +208,9 @@ vec4 shadeHit(ReflectorData plane, vec3 n, ivec2 pix, vec3 origin, vec3 dir, flo
 
     // Material, sampled with the rasterizer's footprint (rayFootprint).
     Footprint footprint = rayFootprint(h, plane, n, pix);
+    uv = materialUv(m, uv);
+    footprint = Footprint(materialUvDelta(m, footprint.coarseX), materialUvDelta(m, footprint.coarseY), materialUvDelta(m, footprint.fineX),
+                          materialUvDelta(m, footprint.fineY));
     vec4 baseColor = m.baseColor * sampleMaterial(m.baseColorTex, uv, footprint, vec4(1.0));
     vec4 mr = sampleMaterial(m.metalRoughTex, uv, footprint, vec4(1.0));
 

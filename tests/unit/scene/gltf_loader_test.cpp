@@ -380,6 +380,22 @@ TEST(Gltf, SpecularGlossinessBecomesMetalRough) {
     expectError([&] { loadGltf(writeGltf(dir, doc, "bad.gltf")); }, {"material 'Painted' KHR_materials_pbrSpecularGlossiness: specularFactor: expected 3 numbers"});
 }
 
+// KHR_texture_transform: uv' = T·R·S·(uv, 1) stored as two rows; identity without the extension.
+TEST(Gltf, TextureTransformBecomesTheMaterialsUvRows) {
+    TempDir dir;
+    json doc = quadJson();
+    doc["materials"][1]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]["KHR_texture_transform"] = {
+        {"offset", {0.5, 0.25}}, {"rotation", 1.5707963267948966}, {"scale", {2.0, 3.0}}};
+    const Scene s = loadGltf(writeGltf(dir, doc));
+    expectVec(s.materials[0].uvRow0, {1, 0, 0}, 0.0f);  // untouched material: exact identity
+    expectVec(s.materials[0].uvRow1, {0, 1, 0}, 0.0f);
+    expectVec(s.materials[1].uvRow0, {0, 3, 0.5f}, 1e-6f);   // (cos·sx, sin·sy, offset.x)
+    expectVec(s.materials[1].uvRow1, {-2, 0, 0.25f}, 1e-6f);  // (−sin·sx, cos·sy, offset.y)
+    doc["materials"][1]["pbrMetallicRoughness"]["baseColorTexture"]["extensions"]["KHR_texture_transform"]["scale"] = {1};
+    expectError([&] { loadGltf(writeGltf(dir, doc, "bad.gltf")); },
+                {"material 'Painted' baseColorTexture KHR_texture_transform: scale: expected 2 numbers"});
+}
+
 TEST(Gltf, PointsAndLinesAreSkipped) {
     TempDir dir;
     json doc = quadJson();
