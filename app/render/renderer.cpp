@@ -41,7 +41,7 @@ glm::mat4 lightViewProjection(const scene::Scene& s, const glm::vec3& lightDir) 
 Renderer::Renderer(const vk::Context& ctx, const scene::Scene& scene) : ctx_(ctx), scene_(scene) {
     samplers_.create(ctx);
     gpuScene_ = std::make_unique<gpu::GpuScene>(ctx, scene, samplers_.linearRepeatAniso);
-    shadow_ = std::make_unique<passes::ShadowPass>(ctx);
+    shadow_ = std::make_unique<passes::ShadowPass>(ctx, *gpuScene_);
     gbuffer_ = std::make_unique<passes::GBufferPass>(ctx, *gpuScene_);
     lighting_ = std::make_unique<passes::LightingPass>(ctx);
     composite_ = std::make_unique<passes::CompositePass>(ctx);

@@ -93,7 +93,9 @@ SceneAccelerationStructures::SceneAccelerationStructures(const vk::Context& ctx,
         tri.indexType = VK_INDEX_TYPE_UINT32;
         tri.indexData.deviceAddress = indices + VkDeviceAddress(mesh.firstIndex) * sizeof(uint32_t);
         b.geometry.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
-        b.geometry.flags = VK_GEOMETRY_OPAQUE_BIT_KHR;
+        // Alpha-masked materials (glTF MASK) are not opaque: the ray query tests their alpha per candidate.
+        const bool masked = mesh.material >= 0 && size_t(mesh.material) < scene.materials.size() && scene.materials[size_t(mesh.material)].masked;
+        b.geometry.flags = masked ? VkGeometryFlagsKHR(0) : VkGeometryFlagsKHR(VK_GEOMETRY_OPAQUE_BIT_KHR);
         b.info.type = VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR;
         b.info.flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR;
         b.info.mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;

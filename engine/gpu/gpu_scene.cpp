@@ -47,6 +47,13 @@ bool GpuScene::transparent(uint32_t draw) const {
     return std::binary_search(transparentDraws_.begin(), transparentDraws_.end(), draw);
 }
 
+bool GpuScene::masked(uint32_t draw) const {
+    const scene::DrawItem& d = scene_.draws[draw];
+    if (d.mesh >= scene_.meshes.size()) return false;
+    const int m = scene_.meshes[d.mesh].material;
+    return m >= 0 && size_t(m) < scene_.materials.size() && scene_.materials[size_t(m)].masked;
+}
+
 GpuScene::GpuScene(const vk::Context& ctx, const scene::Scene& scene, VkSampler materialSampler) : ctx_(ctx), scene_(scene) {
     // Storage: ray-query hits read their triangle's vertices. With ray queries, also the input of the
     // acceleration-structure builds (gpu/acceleration_structures.hpp), which take device addresses.
@@ -82,7 +89,8 @@ GpuScene::GpuScene(const vk::Context& ctx, const scene::Scene& scene, VkSampler 
         g.metallic = m.metallicFactor;
         g.roughness = m.roughnessFactor;
         g.normalScale = m.normalScale;
-        g.flags = (m.reflective ? kMaterialReflective : 0u) | (m.transparent ? kMaterialTransparent : 0u);
+        g.flags = (m.reflective ? kMaterialReflective : 0u) | (m.transparent ? kMaterialTransparent : 0u) | (m.masked ? kMaterialMasked : 0u);
+        g.alphaCutoff = m.alphaCutoff;
         g.baseColorTex = tex(m.baseColorTexture);
         g.normalTex = tex(m.normalTexture);
         g.metalRoughTex = tex(m.metallicRoughnessTexture);
@@ -91,7 +99,7 @@ GpuScene::GpuScene(const vk::Context& ctx, const scene::Scene& scene, VkSampler 
         materials.push_back(g);
     }
     // Default material (for primitives without one) sits at the end.
-    MaterialData fallback{glm::vec4(0.8f), 0.0f, 0.8f, 1.0f, 0u, kNoTexture, kNoTexture, kNoTexture, 0u, glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0)};
+    MaterialData fallback{glm::vec4(0.8f), 0.0f, 0.8f, 1.0f, 0u, kNoTexture, kNoTexture, kNoTexture, 0.5f, glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0)};
     materials.push_back(fallback);
     materials_ = uploadBuffer(ctx, materials.data(), materials.size() * sizeof(MaterialData), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                               "scene materials");

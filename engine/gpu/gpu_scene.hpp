@@ -39,6 +39,14 @@ public:
         for (uint32_t i : order) drawOne(cmd, i, perDraw);
     }
     bool transparent(uint32_t draw) const;
+    bool masked(uint32_t draw) const;  // alphaMode MASK: cut out by base colour alpha
+    // The opaque draws whose masked() equals `masked` (the shadow map draws the two kinds with two pipelines).
+    template <class F>
+    void drawOpaque(VkCommandBuffer cmd, bool masked, F&& perDraw) const {
+        bindGeometry(cmd);
+        for (uint32_t i = 0; i < scene_.draws.size(); ++i)
+            if (!transparent(i) && this->masked(i) == masked) drawOne(cmd, i, perDraw);
+    }
     const std::vector<uint32_t>& transparentDraws() const { return transparentDraws_; }
 
 private:

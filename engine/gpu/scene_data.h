@@ -18,11 +18,11 @@ struct MaterialData {
     float metallic;
     float roughness;
     float normalScale;
-    uint flags;         // kMaterialReflective | kMaterialTransparent
+    uint flags;         // kMaterialReflective | kMaterialTransparent | kMaterialMasked
     uint baseColorTex;  // kNoTexture when absent
     uint normalTex;
     uint metalRoughTex;
-    uint pad0;
+    float alphaCutoff;  // kMaterialMasked: cut out where base colour alpha is below it
     // KHR_texture_transform as the two rows of a 2x3 matrix: uv' = (dot(row0, (uv, 1)), dot(row1, (uv, 1))).
     vec4 uvRow0;  // xyz used; identity (1, 0, 0)
     vec4 uvRow1;  // identity (0, 1, 0)
@@ -62,5 +62,6 @@ PPR_INLINE vec2 materialUvDelta(MaterialData m, vec2 d) { return vec2(dot(vec2(m
 PPR_END
 PPR_CONST(uint, kMaterialReflective, 1u)
 PPR_CONST(uint, kMaterialTransparent, 2u)  // glTF alphaMode BLEND: the glass forward pass draws it
+PPR_CONST(uint, kMaterialMasked, 4u)       // glTF alphaMode MASK: G-buffer and shadow map cut it out
 
 #endif

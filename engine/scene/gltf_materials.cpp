@@ -220,6 +220,12 @@ void loadMaterials(const GltfFile& file, Scene& scene) {
             mat.reflective = flag.Get<bool>();
         }
         mat.transparent = gm.alphaMode == "BLEND";
+        mat.masked = gm.alphaMode == "MASK";
+        if (mat.masked) {
+            mat.alphaCutoff = float(gm.alphaCutoff);
+            if (!(mat.alphaCutoff >= 0.0f) || !std::isfinite(mat.alphaCutoff))
+                fail(what + ": alphaCutoff: expected a finite number >= 0, got " + std::to_string(gm.alphaCutoff));
+        }
         scene.materials.push_back(std::move(mat));
     }
 }

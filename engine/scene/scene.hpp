@@ -41,6 +41,8 @@ struct Material {
     bool reflective = false;            // material extras {"ppr_reflective": true}
     bool transparent = false;           // glTF alphaMode "BLEND": glass, drawn by the glass forward pass
                                         // (base colour = tint, alpha = how strongly it tints)
+    bool masked = false;                // glTF alphaMode "MASK": cut out where base colour alpha < alphaCutoff
+    float alphaCutoff = 0.5f;
 };
 
 struct Mesh {  // one glTF primitive (triangles)

@@ -33,6 +33,7 @@ void main() {
     MaterialData m = materials[d.material];
     vec2 uv = materialUv(m, vUv);
     vec4 base = m.baseColor * sampleOr(m.baseColorTex, uv, vec4(1.0));
+    if ((m.flags & kMaterialMasked) != 0u && base.a < m.alphaCutoff) discard;  // glTF alpha MASK
     vec4 mr = sampleOr(m.metalRoughTex, uv, vec4(1.0));
 
     // Two-sided: flip the geometric frame for back faces so thin panels light correctly. A mirrored

@@ -241,11 +241,26 @@ vec4 shadeHit(ReflectorData plane, vec3 n, ivec2 pix, vec3 origin, vec3 dir, flo
     return vec4(color, kind);
 }
 
+// Whether a candidate hit on an alpha-masked surface (the only non-opaque geometry) is kept: its base
+// colour alpha at the hit, read from the finest mip level, against the material's cutoff.
+bool passesAlphaMask(uint draw, uint prim, vec2 bary) {
+    MaterialData m = materials[draws[draw].material];
+    HitTriangle h = hitTriangle(draw, prim);
+    vec2 uv = materialUv(m, h.v0.uv * (1.0 - bary.x - bary.y) + h.v1.uv * bary.x + h.v2.uv * bary.y);
+    float alpha = m.baseColor.a;
+    if (m.baseColorTex != kNoTexture) alpha *= textureLod(textures[nonuniformEXT(m.baseColorTex)], uv, 0.0).a;
+    return alpha >= m.alphaCutoff;
+}
+
 // The reflection seen along `dir` from `origin` (see shadeHit): the ray query's committed hit, shaded.
 vec4 traceReflection(ReflectorData plane, vec3 n, ivec2 pix, vec3 origin, vec3 dir, float eyeDistance) {
     rayQueryEXT query;
-    rayQueryInitializeEXT(query, tlas, gl_RayFlagsOpaqueEXT, 0xFFu, origin, clipT(plane, origin, dir), dir, 1e7);
+    rayQueryInitializeEXT(query, tlas, gl_RayFlagsNoneEXT, 0xFFu, origin, clipT(plane, origin, dir), dir, 1e7);
     while (rayQueryProceedEXT(query)) {
+        if (rayQueryGetIntersectionTypeEXT(query, false) == gl_RayQueryCandidateIntersectionTriangleEXT &&
+            passesAlphaMask(uint(rayQueryGetIntersectionInstanceCustomIndexEXT(query, false)),
+                            uint(rayQueryGetIntersectionPrimitiveIndexEXT(query, false)), rayQueryGetIntersectionBarycentricsEXT(query, false)))
+            rayQueryConfirmIntersectionEXT(query);
     }
     if (rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionTriangleEXT) return skyReflection(dir);
     vec2 bary = rayQueryGetIntersectionBarycentricsEXT(query, true);

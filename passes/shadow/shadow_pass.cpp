@@ -1,11 +1,13 @@
 #include "shadow/shadow_pass.hpp"
 
 #include "gpu/scene_data.h"
+#include "shadow_masked_frag.h"
+#include "shadow_masked_vert.h"
 #include "shadow_vert.h"
 
 namespace ppr::passes {
 
-ShadowPass::ShadowPass(const vk::Context& ctx) : ctx_(ctx) {
+ShadowPass::ShadowPass(const vk::Context& ctx, const gpu::GpuScene& scene) : ctx_(ctx) {
     shader::PipelineLayoutDesc layout;
     layout.stages = VK_SHADER_STAGE_VERTEX_BIT;
     layout.pushConstantBytes = sizeof(gpu::DrawPush);
@@ -16,6 +18,20 @@ ShadowPass::ShadowPass(const vk::Context& ctx) : ctx_(ctx) {
                     .depth(kFormat, true, true, VK_COMPARE_OP_GREATER_OR_EQUAL)
                     .depthBias(-1.5f, -2.0f)  // reverse-Z: bias towards the light is negative
                     .build();
+    for (uint32_t i = 0; i < scene.cpu().draws.size(); ++i) anyMasked_ |= scene.masked(i) && !scene.transparent(i);
+    if (!anyMasked_) return;
+    shader::PipelineLayoutDesc masked;
+    masked.stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+    masked.pushConstantBytes = sizeof(gpu::DrawPush);
+    masked.extraSets = {scene.textureSetLayout()};
+    maskedPipeline_ = shader::GraphicsPipelineBuilder(ctx, "shadow.masked")
+                          .vertex(PPR_SPIRV(shadow_masked_vert))
+                          .fragment(PPR_SPIRV(shadow_masked_frag))
+                          .layout(masked)
+                          .vertexInput(sizeof(scene::Vertex), sceneVertexAttributes(false))
+                          .depth(kFormat, true, true, VK_COMPARE_OP_GREATER_OR_EQUAL)
+                          .depthBias(-1.5f, -2.0f)
+                          .build();
 }
 
 graph::ImageHandle ShadowPass::add(graph::RenderGraph& g, const FrameInputs& in, uint32_t resolution) const {
@@ -33,7 +49,17 @@ graph::ImageHandle ShadowPass::add(graph::RenderGraph& g, const FrameInputs& in,
                 .uniformBuffer(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
                 .storageBuffer(in.scene->drawBuffer())
                 .push(cmd, pipeline_);
-            in.scene->drawOpaque(cmd, [&](uint32_t i) { pipeline_.pushConstants(cmd, gpu::DrawPush{i, 0, 0, 0}); });
+            in.scene->drawOpaque(cmd, false, [&](uint32_t i) { pipeline_.pushConstants(cmd, gpu::DrawPush{i, 0, 0, 0}); });
+            if (!anyMasked_) return;
+            maskedPipeline_.bind(cmd);
+            shader::PushDescriptors(ctx_)
+                .uniformBuffer(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
+                .storageBuffer(in.scene->drawBuffer())
+                .storageBuffer(in.scene->materialBuffer())
+                .push(cmd, maskedPipeline_);
+            VkDescriptorSet textures = in.scene->textureSet();
+            vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, maskedPipeline_.layout(), 1, 1, &textures, 0, nullptr);
+            in.scene->drawOpaque(cmd, true, [&](uint32_t i) { maskedPipeline_.pushConstants(cmd, gpu::DrawPush{i, 0, 0, 0}); });
         });
     return d.map;
 }

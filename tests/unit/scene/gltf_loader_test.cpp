@@ -396,6 +396,20 @@ TEST(Gltf, TextureTransformBecomesTheMaterialsUvRows) {
                 {"material 'Painted' baseColorTexture KHR_texture_transform: scale: expected 2 numbers"});
 }
 
+TEST(Gltf, AlphaMaskAndCutoff) {
+    TempDir dir;
+    json doc = quadJson();
+    doc["materials"][1]["alphaMode"] = "MASK";
+    doc["materials"][1]["alphaCutoff"] = 0.3;
+    const Scene s = loadGltf(writeGltf(dir, doc));
+    EXPECT_FALSE(s.materials[0].masked);
+    EXPECT_TRUE(s.materials[1].masked);
+    EXPECT_FLOAT_EQ(s.materials[1].alphaCutoff, 0.3f);
+    EXPECT_FALSE(s.materials[1].transparent);
+    doc["materials"][1]["alphaCutoff"] = -1.0;
+    expectError([&] { loadGltf(writeGltf(dir, doc, "bad.gltf")); }, {"material 'Painted'", "alphaCutoff"});
+}
+
 TEST(Gltf, PointsAndLinesAreSkipped) {
     TempDir dir;
     json doc = quadJson();
