@@ -53,21 +53,35 @@ struct TextureCache {
 
     int get(int textureIndex, bool srgb, const std::string& what) {
         if (textureIndex < 0) return -1;
-        const auto& m = file.model;
-        if (size_t(textureIndex) >= m.textures.size())
-            fail(what + ": texture " + std::to_string(textureIndex) + " out of range (" + std::to_string(m.textures.size()) + " textures)");
-        const int source = m.textures[size_t(textureIndex)].source;
-        if (source < 0 || size_t(source) >= m.images.size())
-            fail(what + ": texture " + std::to_string(textureIndex) + " has no usable image (source " + std::to_string(source) + ")");
+        const int source = sourceOf(textureIndex, what);
         if (auto it = slots.find({source, srgb}); it != slots.end()) return it->second;
-        const tinygltf::Image& img = m.images[size_t(source)];
+        TextureImage tex = decode(textureIndex, what);
+        tex.srgb = srgb;
+        scene.textures.push_back(std::move(tex));
+        return slots[{source, srgb}] = int(scene.textures.size() - 1);
+    }
+
+    // The texture's image decoded to RGBA8 and named, without adding it to the scene (for textures a
+    // material derives from it, such as a roughness texture from a specular-glossiness one).
+    TextureImage decode(int textureIndex, const std::string& what) const {
+        const int source = sourceOf(textureIndex, what);
+        const tinygltf::Image& img = file.model.images[size_t(source)];
         std::string name = !img.name.empty() ? img.name : !img.uri.empty() && img.uri.rfind("data:", 0) != 0 ? img.uri
                                                                                                       : "image" + std::to_string(source);
         TextureImage tex = toRgba8(img, what + ": image " + std::to_string(source) + " '" + name + "'");
         tex.name = std::move(name);
-        tex.srgb = srgb;
-        scene.textures.push_back(std::move(tex));
-        return slots[{source, srgb}] = int(scene.textures.size() - 1);
+        return tex;
+    }
+
+private:
+    int sourceOf(int textureIndex, const std::string& what) const {
+        const auto& m = file.model;
+        if (textureIndex < 0 || size_t(textureIndex) >= m.textures.size())
+            fail(what + ": texture " + std::to_string(textureIndex) + " out of range (" + std::to_string(m.textures.size()) + " textures)");
+        const int source = m.textures[size_t(textureIndex)].source;
+        if (source < 0 || size_t(source) >= m.images.size())
+            fail(what + ": texture " + std::to_string(textureIndex) + " has no usable image (source " + std::to_string(source) + ")");
+        return source;
     }
 };
 
@@ -128,11 +142,11 @@ void applySpecularGlossiness(const tinygltf::Value& ext, Material& mat, TextureC
     mat.metallicRoughnessTexture = -1;
     if (const int sg = textureIndex(ext, "specularGlossinessTexture", what); sg >= 0) {
         // Decoded linear, then rewritten per texel: roughness in G, metallic (the factor) in B.
-        const TextureImage& source = scene.textures[size_t(textures.get(sg, false, what + " specularGlossinessTexture"))];
-        TextureImage rough = source;
-        rough.name = source.name + " (roughness from glossiness)";
+        TextureImage rough = textures.decode(sg, what + " specularGlossinessTexture");
+        rough.name += " (roughness from glossiness)";
+        rough.srgb = false;
         for (size_t p = 0; p < size_t(rough.width) * rough.height; ++p) {
-            const float gloss = glossiness * float(source.rgba8[p * 4 + 3]) / 255.0f;
+            const float gloss = glossiness * float(rough.rgba8[p * 4 + 3]) / 255.0f;
             rough.rgba8[p * 4 + 0] = 255;
             rough.rgba8[p * 4 + 1] = uint8_t(std::lround(255.0f * std::clamp(1.0f - gloss, 0.0f, 1.0f)));
             rough.rgba8[p * 4 + 2] = 255;
