@@ -76,6 +76,8 @@ passes::FrameInputs FrameConstantsBuffer::inputs(const ReflectorSet& reflectors,
     in.reflectors = reflectors.buffer().reflectors(slot_);
     in.looseReflectors = reflectors.surfaces().loose(slot_);
     in.looseCount = reflectors.surfaces().looseCount();
+    in.looseGlassReflectors = reflectors.surfaces().looseGlass(slot_);
+    in.looseGlassCount = reflectors.surfaces().looseGlassCount();
     return in;
 }
 

@@ -24,13 +24,14 @@ void ReflectorSet::set(std::vector<scene::Reflector> reflectors) {
     for (int r : binding)
         if (r >= 0) bound[size_t(r)] = true;
     const size_t projected = std::min<size_t>(list_.size(), gpu::kPprMaxReflectors);
-    std::vector<uint32_t> loose;
+    std::vector<uint32_t> loose, looseGlass;
     glassIndices_.clear();
     for (size_t i = 0; i < projected; ++i) {
-        if (!bound[i] && list_[i].kind == scene::ReflectorKind::Opaque) loose.push_back(static_cast<uint32_t>(i));
-        if (list_[i].kind == scene::ReflectorKind::Glass) glassIndices_.push_back(static_cast<uint32_t>(i));
+        const bool glass = list_[i].kind == scene::ReflectorKind::Glass;
+        if (!bound[i]) (glass ? looseGlass : loose).push_back(static_cast<uint32_t>(i));
+        if (glass) glassIndices_.push_back(static_cast<uint32_t>(i));
     }
-    surfaces_->set(binding, loose, version_);
+    surfaces_->set(binding, loose, looseGlass, version_);
 }
 
 void ReflectorSet::update(uint32_t slot) {

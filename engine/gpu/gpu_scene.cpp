@@ -14,7 +14,8 @@ namespace ppr::gpu {
 
 static_assert(sizeof(VertexData) == sizeof(scene::Vertex) && offsetof(VertexData, position) == offsetof(scene::Vertex, position) &&
                   offsetof(VertexData, normal) == offsetof(scene::Vertex, normal) &&
-                  offsetof(VertexData, tangent) == offsetof(scene::Vertex, tangent) && offsetof(VertexData, uv) == offsetof(scene::Vertex, uv0),
+                  offsetof(VertexData, tangent) == offsetof(scene::Vertex, tangent) && offsetof(VertexData, uv) == offsetof(scene::Vertex, uv0) &&
+                  offsetof(VertexData, color) == offsetof(scene::Vertex, color),
               "gpu::VertexData (scene_data.h) must match scene::Vertex");
 
 vk::Buffer uploadBuffer(const vk::Context& ctx, const void* data, VkDeviceSize bytes, VkBufferUsageFlags usage,
@@ -75,6 +76,7 @@ GpuScene::GpuScene(const vk::Context& ctx, const scene::Scene& scene, VkSampler 
         g.reflectorId = d.reflector >= 0 ? static_cast<uint32_t>(d.reflector) + 1 : 0;
         g.firstIndex = m.firstIndex;
         g.vertexOffset = m.vertexOffset;
+        g.flags = m.vertexColors ? kDrawVertexColors : 0u;
         if (m.material >= 0 && scene.materials[size_t(m.material)].transparent)
             transparentDraws_.push_back(static_cast<uint32_t>(draws.size()));
         draws.push_back(g);
@@ -96,10 +98,13 @@ GpuScene::GpuScene(const vk::Context& ctx, const scene::Scene& scene, VkSampler 
         g.metalRoughTex = tex(m.metallicRoughnessTexture);
         g.uvRow0 = glm::vec4(m.uvRow0, 0.0f);
         g.uvRow1 = glm::vec4(m.uvRow1, 0.0f);
+        g.emissive = m.emissiveFactor;
+        g.emissiveTex = tex(m.emissiveTexture);
         materials.push_back(g);
     }
     // Default material (for primitives without one) sits at the end.
-    MaterialData fallback{glm::vec4(0.8f), 0.0f, 0.8f, 1.0f, 0u, kNoTexture, kNoTexture, kNoTexture, 0.5f, glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0)};
+    MaterialData fallback{glm::vec4(0.8f), 0.0f, 0.8f, 1.0f, 0u, kNoTexture, kNoTexture, kNoTexture, 0.5f, glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0),
+                          glm::vec3(0.0f), kNoTexture};
     materials.push_back(fallback);
     materials_ = uploadBuffer(ctx, materials.data(), materials.size() * sizeof(MaterialData), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                               "scene materials");

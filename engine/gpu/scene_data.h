@@ -11,6 +11,10 @@ struct DrawData {
     uint reflectorId;   // load-time binding (index + 1, 0 = none); the frame's is common/surface_binding.hpp
     uint firstIndex;    // the mesh's triangles in the scene index buffer (ray-query hits fetch their vertices)
     int vertexOffset;   // added to each index, as vkCmdDrawIndexed does
+    uint flags;         // kDrawVertexColors
+    uint pad0;
+    uint pad1;
+    uint pad2;
 };
 
 struct MaterialData {
@@ -26,6 +30,8 @@ struct MaterialData {
     // KHR_texture_transform as the two rows of a 2x3 matrix: uv' = (dot(row0, (uv, 1)), dot(row1, (uv, 1))).
     vec4 uvRow0;  // xyz used; identity (1, 0, 0)
     vec4 uvRow1;  // identity (0, 1, 0)
+    vec3 emissive;     // emitted radiance, added to the lit colour (zero: not emissive)
+    uint emissiveTex;  // kNoTexture when absent; multiplies `emissive`
 };
 
 // scene::Vertex as shaders that read the vertex buffer as storage see it (the ray-traced reference's
@@ -35,6 +41,7 @@ struct VertexData {
     vec3 normal;
     vec4 tangent;  // xyz + handedness sign in w
     vec2 uv;
+    uvec2 color;  // RGBA16 unorm: unpackUnorm2x16 of x = (r, g), of y = (b, a)
 };
 
 // Push constants of the mesh passes (shadow, gbuffer).
@@ -45,9 +52,9 @@ struct DrawPush {
     uint pad2;
 };
 PPR_END
-PPR_SIZE_CHECK(DrawData, 144);
-PPR_SIZE_CHECK(VertexData, 48);
-PPR_SIZE_CHECK(MaterialData, 80);
+PPR_SIZE_CHECK(DrawData, 160);
+PPR_SIZE_CHECK(VertexData, 56);
+PPR_SIZE_CHECK(MaterialData, 96);
 PPR_SIZE_CHECK(DrawPush, 16);
 
 PPR_CONST(uint, kNoTexture, 0xFFFFFFFFu)
@@ -59,6 +66,13 @@ PPR_INLINE vec2 materialUv(MaterialData m, vec2 uv) {
 }
 // A difference of texture coordinates (a footprint's derivative) under the same transform.
 PPR_INLINE vec2 materialUvDelta(MaterialData m, vec2 d) { return vec2(dot(vec2(m.uvRow0), d), dot(vec2(m.uvRow1), d)); }
+PPR_END
+// Only meshes with COLOR_0 multiply by it: an interpolated constant white need not be exactly 1.0, and
+// scenes without vertex colours stay bit-identical.
+PPR_CONST(uint, kDrawVertexColors, 1u)
+PPR_BEGIN
+// A vertex's COLOR_0 (VertexData::color).
+PPR_INLINE vec4 vertexColor(uvec2 packed) { return vec4(unpackUnorm2x16(packed.x), unpackUnorm2x16(packed.y)); }
 PPR_END
 PPR_CONST(uint, kMaterialReflective, 1u)
 PPR_CONST(uint, kMaterialTransparent, 2u)  // glTF alphaMode BLEND: the glass forward pass draws it

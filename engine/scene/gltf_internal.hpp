@@ -22,7 +22,7 @@ struct GltfFile {
 };
 
 // --- accessors (gltf_accessors.cpp): every range is checked before a byte is read.
-enum class AccessorKind { Vec3Float, Vec4Float, TexCoord, Index };
+enum class AccessorKind { Vec3Float, Vec4Float, TexCoord, Color, Index };
 struct AccessorView {
     const unsigned char* data = nullptr;  // into the glTF buffer, or into `owned`
     std::shared_ptr<const std::vector<unsigned char>> owned;  // a sparse accessor's elements, materialised
@@ -36,6 +36,10 @@ uint32_t readIndex(const AccessorView& view, size_t element);
 
 // --- meshes (gltf_meshes.cpp): one glTF primitive → Scene::meshes entry; -1 when skipped.
 int loadPrimitive(const GltfFile& file, int mesh, int primitive, Scene& scene);
+
+// --- extensions: what the loader implements (gltf_materials.cpp holds the list); a required one
+// outside it is refused, an optional one warned about once and ignored.
+bool isSupportedExtension(const std::string& name);
 
 // --- materials and textures (gltf_materials.cpp): Scene::materials[i] is glTF material i.
 void loadMaterials(const GltfFile& file, Scene& scene);

@@ -77,10 +77,12 @@ void loadModel(const std::string& path, tinygltf::Model& model) {
     // tinygltf reports some schema errors (e.g. a material's texture without "index") yet returns true.
     if (!ok || !err.empty()) fail(path + ": " + firstLine(err));
     if (!warn.empty()) fail(path + ": " + firstLine(warn));  // e.g. an image file that failed to load
-    // A required extension changes how data must be read (Draco, quantization, texture transforms...):
-    // ignoring it would draw a wrong picture, so refuse.
-    if (!model.extensionsRequired.empty())
-        fail(path + ": extensionsRequired: '" + model.extensionsRequired[0] + "' is not supported");
+    // A required extension changes how data must be read (Draco, quantization...): ignoring one we do
+    // not implement would draw a wrong picture, so refuse. An optional one only loses its refinement.
+    for (const std::string& name : model.extensionsRequired)
+        if (!isSupportedExtension(name)) fail(path + ": extensionsRequired: '" + name + "' is not supported");
+    for (const std::string& name : model.extensionsUsed)
+        if (!isSupportedExtension(name)) std::cerr << path << ": extensionsUsed: '" << name << "' is not supported; ignored\n";
 }
 
 // Vertex positions and node transforms are each finite, yet their product can overflow (fuzz_gltf:

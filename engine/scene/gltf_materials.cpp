@@ -182,7 +182,29 @@ std::optional<UvTransform> textureTransform(const tinygltf::ExtensionMap& extens
     return UvTransform{{c * s.x, sn * s.y, o.x}, {-sn * s.x, c * s.y, o.y}};
 }
 
+// KHR_materials_emissive_strength: the factor that lets emissiveFactor exceed 1 (HDR emitters).
+float emissiveStrength(const tinygltf::ExtensionMap& extensions, const std::string& what) {
+    const auto it = extensions.find("KHR_materials_emissive_strength");
+    if (it == extensions.end()) return 1.0f;
+    const std::string where = what + " KHR_materials_emissive_strength";
+    const tinygltf::Value& e = it->second;
+    if (!e.IsObject()) fail(where + ": expected an object");
+    if (!e.Has("emissiveStrength")) return 1.0f;
+    const tinygltf::Value& s = e.Get("emissiveStrength");
+    const double strength = s.IsNumber() ? s.GetNumberAsDouble() : -1.0;
+    if (!(strength >= 0.0) || !std::isfinite(strength)) fail(where + ": emissiveStrength: expected a finite number >= 0");
+    return float(strength);
+}
+
 }  // namespace
+
+bool isSupportedExtension(const std::string& name) {
+    static constexpr const char* kSupported[] = {"KHR_materials_emissive_strength", "KHR_materials_pbrSpecularGlossiness",
+                                                 "KHR_texture_transform"};
+    for (const char* s : kSupported)
+        if (name == s) return true;
+    return false;
+}
 
 void loadMaterials(const GltfFile& file, Scene& scene) {
     TextureCache textures{file, scene, {}};
@@ -205,7 +227,18 @@ void loadMaterials(const GltfFile& file, Scene& scene) {
         for (float f : factors)
             if (!std::isfinite(f)) fail(what + ": non-finite factor");
 
+        if (gm.emissiveFactor.size() == 3)
+            mat.emissiveFactor = glm::vec3(gm.emissiveFactor[0], gm.emissiveFactor[1], gm.emissiveFactor[2]);
+        else if (!gm.emissiveFactor.empty())
+            fail(what + ": emissiveFactor: expected 3 numbers");
+        if (!std::isfinite(mat.emissiveFactor.r) || !std::isfinite(mat.emissiveFactor.g) || !std::isfinite(mat.emissiveFactor.b) ||
+            glm::any(glm::lessThan(mat.emissiveFactor, glm::vec3(0.0f))))
+            fail(what + ": emissiveFactor: expected finite numbers >= 0");
+        mat.emissiveFactor *= emissiveStrength(gm.extensions, what);
+
         mat.baseColorTexture = textures.get(pbr.baseColorTexture.index, true, what + " baseColorTexture");
+        if (mat.emissiveFactor != glm::vec3(0.0f))  // a texture under a zero factor emits nothing: not decoded
+            mat.emissiveTexture = textures.get(gm.emissiveTexture.index, true, what + " emissiveTexture");
         mat.normalTexture = textures.get(gm.normalTexture.index, false, what + " normalTexture");
         mat.metallicRoughnessTexture = textures.get(pbr.metallicRoughnessTexture.index, false, what + " metallicRoughnessTexture");
 
@@ -214,7 +247,8 @@ void loadMaterials(const GltfFile& file, Scene& scene) {
         std::optional<UvTransform> uv;
         const std::pair<const tinygltf::ExtensionMap*, const char*> infos[] = {{&pbr.baseColorTexture.extensions, "baseColorTexture"},
                                                                                {&pbr.metallicRoughnessTexture.extensions, "metallicRoughnessTexture"},
-                                                                               {&gm.normalTexture.extensions, "normalTexture"}};
+                                                                               {&gm.normalTexture.extensions, "normalTexture"},
+                                                                               {&gm.emissiveTexture.extensions, "emissiveTexture"}};
         for (const auto& [extensions, slot] : infos)
             if (std::optional<UvTransform> t = textureTransform(*extensions, what + " " + slot)) {
                 if (!uv) uv = t;

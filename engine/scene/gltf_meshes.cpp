@@ -72,9 +72,10 @@ int loadPrimitive(const GltfFile& file, int meshIndex, int primIndex, Scene& sce
     if (posIt == prim.attributes.end()) in.bad("POSITION: missing (required)");
     const AccessorView pos = viewAccessor(file, posIt->second, AccessorKind::Vec3Float, in.what + ": POSITION");
     const size_t n = pos.count;
-    AccessorView nrm, uv, tan;
+    AccessorView nrm, uv, tan, color;
     const bool hasNormal = in.attribute("NORMAL", AccessorKind::Vec3Float, n, nrm);
     const bool hasUv = in.attribute("TEXCOORD_0", AccessorKind::TexCoord, n, uv);
+    const bool hasColor = in.attribute("COLOR_0", AccessorKind::Color, n, color);
     const bool hasTangent = hasNormal && in.attribute("TANGENT", AccessorKind::Vec4Float, n, tan);  // ignored without normals (spec)
 
     std::vector<uint32_t> indices;
@@ -113,6 +114,12 @@ int loadPrimitive(const GltfFile& file, int meshIndex, int primIndex, Scene& sce
             readFloats(uv, i, &v.uv0.x);
             if (!finite(&v.uv0.x, 2)) in.bad("TEXCOORD_0 contains non-finite values (vertex " + std::to_string(i) + ")");
         }
+        if (hasColor) {
+            glm::vec4 c(1.0f);  // VEC3 colours are opaque
+            readFloats(color, i, &c.x);
+            if (!finite(&c.x, color.components)) in.bad("COLOR_0 contains non-finite values (vertex " + std::to_string(i) + ")");
+            v.color = glm::u16vec4(glm::round(glm::clamp(c, 0.0f, 1.0f) * 65535.0f));
+        }
         if (hasNormal) {
             readFloats(nrm, i, &v.normal.x);
             const float len = glm::length(v.normal);
@@ -140,6 +147,7 @@ int loadPrimitive(const GltfFile& file, int meshIndex, int primIndex, Scene& sce
     mesh.firstIndex = uint32_t(scene.indices.size());
     mesh.indexCount = uint32_t(indices.size());
     mesh.vertexOffset = int32_t(scene.vertices.size());
+    mesh.vertexColors = hasColor;
     mesh.material = prim.material;
     mesh.boundsMin = mesh.boundsMax = vertices[indices[0]].position;
     for (uint32_t i : indices) {

@@ -5,6 +5,7 @@
 #include "scene/reflector.hpp"
 
 #include <glm/glm.hpp>
+#include <glm/gtc/type_precision.hpp>
 
 #include <cstdint>
 #include <string>
@@ -17,8 +18,9 @@ struct Vertex {
     glm::vec3 normal;
     glm::vec4 tangent;  // xyz + handedness sign in w (glTF convention); generated when missing
     glm::vec2 uv0;
+    glm::u16vec4 color{65535};  // COLOR_0 (linear RGBA, 16-bit unorm), multiplies the base colour; white when absent
 };
-static_assert(sizeof(Vertex) == 48);
+static_assert(sizeof(Vertex) == 56);
 
 struct TextureImage {
     std::string name;
@@ -36,6 +38,8 @@ struct Material {
     int baseColorTexture = -1;          // index into Scene::textures
     int normalTexture = -1;
     int metallicRoughnessTexture = -1;  // glTF: G = roughness, B = metallic
+    glm::vec3 emissiveFactor{0.0f};     // emitted radiance (linear), KHR_materials_emissive_strength applied
+    int emissiveTexture = -1;           // sRGB, multiplies emissiveFactor
     // KHR_texture_transform (one per material: every texture uses it): uv' = (row0 · (uv, 1), row1 · (uv, 1)).
     glm::vec3 uvRow0{1.0f, 0.0f, 0.0f}, uvRow1{0.0f, 1.0f, 0.0f};
     bool reflective = false;            // material extras {"ppr_reflective": true}
@@ -52,6 +56,7 @@ struct Mesh {  // one glTF primitive (triangles)
     int32_t vertexOffset = 0;  // into Scene::vertices
     int material = -1;         // -1 = default material
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // object space
+    bool vertexColors = false;  // COLOR_0 present: Vertex::color multiplies the base colour
 };
 
 struct DrawItem {

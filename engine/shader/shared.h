@@ -8,6 +8,7 @@
 
 #ifdef __cplusplus
 #include <glm/glm.hpp>
+#include <glm/gtc/packing.hpp>  // unpackUnorm2x16 and friends, as GLSL has them
 #include <cstdint>
 #define PPR_BEGIN namespace ppr::gpu { using vec2 = glm::vec2; using vec3 = glm::vec3; using vec4 = glm::vec4; \
     using mat4 = glm::mat4; using uint = uint32_t; using uvec2 = glm::uvec2; using uvec4 = glm::uvec4; \

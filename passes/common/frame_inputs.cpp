@@ -12,6 +12,7 @@ std::vector<VkVertexInputAttributeDescription> sceneVertexAttributes(bool positi
         a.push_back({1, 0, VK_FORMAT_R32G32B32_SFLOAT, static_cast<uint32_t>(offsetof(Vertex, normal))});
         a.push_back({2, 0, VK_FORMAT_R32G32B32A32_SFLOAT, static_cast<uint32_t>(offsetof(Vertex, tangent))});
         a.push_back({3, 0, VK_FORMAT_R32G32_SFLOAT, static_cast<uint32_t>(offsetof(Vertex, uv0))});
+        a.push_back({4, 0, VK_FORMAT_R16G16B16A16_UNORM, static_cast<uint32_t>(offsetof(Vertex, color))});
     }
     return a;
 }

@@ -19,6 +19,8 @@ struct FrameInputs {
     // and the loose ones the G-buffer tests per pixel.
     VkBuffer drawReflectors = VK_NULL_HANDLE, reflectors = VK_NULL_HANDLE, looseReflectors = VK_NULL_HANDLE;
     uint32_t looseCount = 0;
+    VkBuffer looseGlassReflectors = VK_NULL_HANDLE;  // and the glass ones the glass forward pass tests per pixel
+    uint32_t looseGlassCount = 0;
     // How passes clear images (common/clear_pass.hpp): ImageClear's compute clear, or a transfer clear.
     const ImageClear* clear = nullptr;
     bool computeClear = false;

@@ -18,11 +18,13 @@ layout(location = 0) in vec3 vNormal;
 layout(location = 1) in vec4 vTangent;
 layout(location = 2) in vec2 vUv;
 layout(location = 3) flat in uint vDraw;
+layout(location = 4) in vec4 vColor;
 
 layout(location = 0) out vec4 outNormal;
 layout(location = 1) out vec4 outAlbedo;
 layout(location = 2) out vec4 outMaterial;
 layout(location = 3) out uint outReflector;
+layout(location = 4) out vec4 outEmissive;
 
 vec4 sampleOr(uint tex, vec2 uv, vec4 fallback) {
     return tex == kNoTexture ? fallback : texture(textures[nonuniformEXT(tex)], uv);
@@ -33,6 +35,7 @@ void main() {
     MaterialData m = materials[d.material];
     vec2 uv = materialUv(m, vUv);
     vec4 base = m.baseColor * sampleOr(m.baseColorTex, uv, vec4(1.0));
+    if ((d.flags & kDrawVertexColors) != 0u) base *= vColor;
     if ((m.flags & kMaterialMasked) != 0u && base.a < m.alphaCutoff) discard;  // glTF alpha MASK
     vec4 mr = sampleOr(m.metalRoughTex, uv, vec4(1.0));
 
@@ -65,4 +68,5 @@ void main() {
         }
     }
     outReflector = id;
+    outEmissive = vec4(m.emissive * sampleOr(m.emissiveTex, uv, vec4(1.0)).rgb, 0.0);
 }

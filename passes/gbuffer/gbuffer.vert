@@ -10,11 +10,13 @@ layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec4 inTangent;
 layout(location = 3) in vec2 inUv;
+layout(location = 4) in vec4 inColor;  // COLOR_0, white without
 
 layout(location = 0) out vec3 vNormal;
 layout(location = 1) out vec4 vTangent;
 layout(location = 2) out vec2 vUv;
 layout(location = 3) flat out uint vDraw;
+layout(location = 4) out vec4 vColor;
 
 void main() {
     DrawData d = draws[pc.drawIndex];
@@ -22,6 +24,7 @@ void main() {
     vNormal = mat3(d.normalMatrix) * inNormal;
     vTangent = vec4(mat3(d.world) * inTangent.xyz, inTangent.w);
     vUv = inUv;
+    vColor = inColor;
     vDraw = pc.drawIndex;
     gl_Position = frame.viewProj * world;
 }

@@ -4,9 +4,17 @@
 #include "gbuffer_vert.h"
 #include "gpu/scene_data.h"
 
+#include <stdexcept>
+
 namespace ppr::passes {
 
 GBufferPass::GBufferPass(const vk::Context& ctx, const gpu::GpuScene& scene) : ctx_(ctx) {
+    // Not a format Vulkan requires as a colour attachment, though every desktop driver and lavapipe render to it.
+    VkFormatProperties emissive{};
+    vkGetPhysicalDeviceFormatProperties(ctx.physicalDevice(), kEmissiveFormat, &emissive);
+    constexpr VkFormatFeatureFlags kNeeded = VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT;
+    if ((emissive.optimalTilingFeatures & kNeeded) != kNeeded)
+        throw std::runtime_error("device: cannot render to VK_FORMAT_B10G11R11_UFLOAT_PACK32 (the G-buffer's emissive target)");
     shader::PipelineLayoutDesc layout;
     layout.stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     layout.pushConstantBytes = sizeof(gpu::DrawPush);
@@ -16,7 +24,7 @@ GBufferPass::GBufferPass(const vk::Context& ctx, const gpu::GpuScene& scene) : c
                     .fragment(PPR_SPIRV(gbuffer_frag))
                     .layout(layout)
                     .vertexInput(sizeof(scene::Vertex), sceneVertexAttributes(false))
-                    .colorFormats({kNormalFormat, kAlbedoFormat, kMaterialFormat, kReflectorFormat})
+                    .colorFormats({kNormalFormat, kAlbedoFormat, kMaterialFormat, kReflectorFormat, kEmissiveFormat})
                     .depth(kDepthFormat, true, true, VK_COMPARE_OP_GREATER)
                     .build();
 }
@@ -29,6 +37,7 @@ GBuffer GBufferPass::createTargets(graph::RenderGraph& g, const std::string& nam
     out.albedo = g.createImage(name + ".albedo", {w, h, kAlbedoFormat, 1});
     out.material = g.createImage(name + ".material", {w, h, kMaterialFormat, 1});
     out.reflector = g.createImage(name + ".reflector", {w, h, kReflectorFormat, 1});
+    out.emissive = g.createImage(name + ".emissive", {w, h, kEmissiveFormat, 1});
     return out;
 }
 
@@ -42,6 +51,7 @@ GBuffer GBufferPass::add(graph::RenderGraph& g, const FrameInputs& in, const std
             data.material = b.colorAttachment(out.material, graph::LoadOp::Clear, {{1.0f, 0.0f, 0.0f, 0.0f}});
             VkClearColorValue zero{};
             data.reflector = b.colorAttachment(out.reflector, graph::LoadOp::Clear, zero);
+            data.emissive = b.colorAttachment(out.emissive, graph::LoadOp::Clear, {{0.0f, 0.0f, 0.0f, 0.0f}});
             data.depth = b.depthAttachment(out.depth, graph::LoadOp::Clear, 0.0f);
         },
         [this, in](const GBuffer&, graph::PassContext& pc) {

@@ -6,7 +6,7 @@
 namespace ppr::passes {
 
 struct GBuffer {
-    graph::ImageHandle depth, normal, albedo, material, reflector;
+    graph::ImageHandle depth, normal, albedo, material, reflector, emissive;
 };
 
 class GBufferPass {
@@ -16,6 +16,7 @@ public:
     static constexpr VkFormat kAlbedoFormat = VK_FORMAT_R8G8B8A8_SRGB;
     static constexpr VkFormat kMaterialFormat = VK_FORMAT_R8G8B8A8_UNORM;
     static constexpr VkFormat kReflectorFormat = VK_FORMAT_R16_UINT;
+    static constexpr VkFormat kEmissiveFormat = VK_FORMAT_B10G11R11_UFLOAT_PACK32;
 
     GBufferPass(const vk::Context& ctx, const gpu::GpuScene& scene);
     // `targets`: existing images to draw into (new versions), e.g. the planar reference reusing one

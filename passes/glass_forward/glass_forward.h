@@ -18,7 +18,7 @@ struct GlassRegionData {
 struct GlassForwardPush {
     uint drawIndex;
     uint flags;  // kGlassReflections
-    uint pad0;
+    uint looseGlassCount;  // glass reflectors tested per pixel for a draw bound to none (gbuffer/gbuffer.h)
     uint pad1;
 };
 PPR_END

@@ -8,6 +8,7 @@
 #include "common/brdf.glsl"
 #include "common/reflection.h"
 #include "common/reflector_data.h"
+#include "gbuffer/gbuffer.h"
 #include "glass_forward/glass_forward.h"
 #extension GL_EXT_nonuniform_qualifier : require
 #include "gpu/scene_data.h"
@@ -16,9 +17,10 @@ layout(set = 0, binding = 1, scalar) readonly buffer Draws { DrawData draws[]; }
 layout(set = 0, binding = 2, scalar) readonly buffer Materials { MaterialData materials[]; };
 layout(set = 0, binding = 3, scalar) readonly buffer Reflectors { ReflectorData reflectors[]; };
 layout(set = 0, binding = 4, scalar) readonly buffer DrawReflectors { uint drawReflectors[]; };  // common/surface_binding.hpp
+layout(set = 0, binding = 5, scalar) readonly buffer LooseGlass { uint looseGlass[]; };
 #ifdef GLASS_REFLECTION
-layout(set = 0, binding = 5, scalar) readonly buffer Regions { GlassRegionData regions[]; };
-layout(set = 0, binding = 6) uniform sampler2D reflectionAtlas;  // rgba16f, common/reflection.h alpha codes
+layout(set = 0, binding = 6, scalar) readonly buffer Regions { GlassRegionData regions[]; };
+layout(set = 0, binding = 7) uniform sampler2D reflectionAtlas;  // rgba16f, common/reflection.h alpha codes
 #endif
 layout(set = 1, binding = 0) uniform sampler2D textures[];
 layout(push_constant, scalar) uniform Push { GlassForwardPush pc; };
@@ -27,6 +29,7 @@ layout(location = 0) in vec3 vNormal;
 layout(location = 1) in vec4 vTangent;
 layout(location = 2) in vec2 vUv;
 layout(location = 3) flat in uint vDraw;
+layout(location = 4) in vec4 vColor;
 
 layout(location = 0, index = 0) out vec4 outAdd;
 layout(location = 0, index = 1) out vec4 outFilter;
@@ -35,10 +38,25 @@ void main() {
     DrawData d = draws[vDraw];
     MaterialData m = materials[d.material];
     vec4 base = m.baseColor * (m.baseColorTex == kNoTexture ? vec4(1.0) : texture(textures[nonuniformEXT(m.baseColorTex)], materialUv(m, vUv)));
+    if ((d.flags & kDrawVertexColors) != 0u) base *= vColor;
     vec3 world = worldFromDepth(gl_FragCoord.xy * frame.invScreenSize, gl_FragCoord.z);
     vec3 v = normalize(frame.cameraPos.xyz - world);
     vec3 n = normalize(vNormal);
     uint reflectorId = drawReflectors[vDraw];
+    if (reflectorId == 0u) {
+        // A draw holding many panes: the glass reflector whose rectangle this point lies on, the one
+        // facing the viewer first (a pane fitted on both faces has one reflector per face); one seen
+        // from behind still sets the reflectance, as it does for a draw bound to it.
+        float tolerance = kLooseSurfaceTolerance + kLooseSurfaceTolerancePerMetre * distance(world, frame.cameraPos.xyz);
+        uint behind = 0u;
+        for (uint k = 0u; k < pc.looseGlassCount && reflectorId == 0u; ++k) {
+            ReflectorData r = reflectors[looseGlass[k]];
+            if (abs(dot(world - r.center, r.normal)) > tolerance || !reflectorContains(r, world)) continue;
+            if (dot(r.normal, v) > 0.0) reflectorId = looseGlass[k] + 1u;
+            else if (behind == 0u) behind = looseGlass[k] + 1u;
+        }
+        if (reflectorId == 0u) reflectorId = behind;
+    }
     float reflectance = reflectorId != 0u ? reflectors[reflectorId - 1u].reflectance : 1.0;
     float weight = fresnelSchlick(abs(dot(n, v)), vec3(0.04)).x * reflectance;
     vec3 reflection = vec3(0.0);
@@ -54,6 +72,8 @@ void main() {
     }
 #endif
     vec3 tint = mix(vec3(1.0), base.rgb, base.a);
-    outAdd = vec4(weight * reflection, 0.0);
+    // An emissive pane (glTF emissive on a BLEND material) adds its light over whatever it filters.
+    vec3 emitted = m.emissive * (m.emissiveTex == kNoTexture ? vec3(1.0) : texture(textures[nonuniformEXT(m.emissiveTex)], materialUv(m, vUv)).rgb);
+    outAdd = vec4(weight * reflection + emitted, 0.0);
     outFilter = vec4((1.0 - weight) * tint, 1.0);
 }

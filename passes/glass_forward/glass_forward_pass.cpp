@@ -68,14 +68,15 @@ graph::ImageHandle GlassForwardPass::add(graph::RenderGraph& g, const FrameInput
                 .storageBuffer(in.scene->drawBuffer())
                 .storageBuffer(in.scene->materialBuffer())
                 .storageBuffer(reflectors)
-                .storageBuffer(in.drawReflectors);
+                .storageBuffer(in.drawReflectors)
+                .storageBuffer(in.looseGlassReflectors);
             if (withReflection)
                 push.storageBuffer(pc.buffer(data.regions)).sampled(pc.view(data.atlas), pc.layout(data.atlas), in.samplers->linearClamp);
             push.push(cmd, pipeline);
             VkDescriptorSet textures = in.scene->textureSet();
             vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.layout(), 1, 1, &textures, 0, nullptr);
             const uint32_t flags = withReflection ? gpu::kGlassReflections : 0u;
-            in.scene->drawInOrder(cmd, *order, [&](uint32_t i) { pipeline.pushConstants(cmd, gpu::GlassForwardPush{i, flags, 0, 0}); });
+            in.scene->drawInOrder(cmd, *order, [&](uint32_t i) { pipeline.pushConstants(cmd, gpu::GlassForwardPush{i, flags, in.looseGlassCount, 0}); });
         });
     return d.color;
 }

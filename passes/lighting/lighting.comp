@@ -11,6 +11,7 @@ layout(set = 0, binding = 3) uniform sampler2D albedoTex;
 layout(set = 0, binding = 4) uniform sampler2D materialTex;
 layout(set = 0, binding = 5) uniform sampler2DShadow shadowMap;
 layout(set = 0, binding = 6, rgba16f) uniform writeonly image2D outColor;
+layout(set = 0, binding = 7) uniform sampler2D emissiveTex;
 
 #include "lighting/shade.glsl"
 
@@ -32,7 +33,7 @@ void main() {
     float roughness = mat.r, metallic = mat.g;
     vec3 v = normalize(toCamera);
     float shadow;
-    vec3 color = shadeSurface(world, n, v, albedo, roughness, metallic, shadow);
+    vec3 color = shadeSurface(world, n, v, albedo, roughness, metallic, shadow) + texelFetch(emissiveTex, pix, 0).rgb;
     // --set debug=shadow: the sun's visibility (the composite divides debug views by the exposure).
     if (frame.debugView == kDebugShadow) color = vec3(shadow * frame.lightColor.w);
     imageStore(outColor, pix, vec4(color, 1.0));

@@ -24,6 +24,7 @@ graph::ImageHandle LightingPass::add(graph::RenderGraph& g, const FrameInputs& i
         .sampled(gb.material, s.nearestClamp)
         .sampled(shadowMap, s.shadowCompare)
         .storageWrite(target, &out)
+        .sampled(gb.emissive, s.nearestClamp)
         .dispatch(in.extent, gpu::kLightingGroupSize);
     return out;
 }

@@ -74,6 +74,13 @@ vec3 storedAlbedo(vec3 c) {
     return vec3(srgbDecode(unorm8(srgbEncode(c.r))), srgbDecode(unorm8(srgbEncode(c.g))), srgbDecode(unorm8(srgbEncode(c.b))));
 }
 vec3 storedNormal(vec3 n) { return vec3(unpackHalf2x16(packHalf2x16(n.xy)), unpackHalf2x16(packHalf2x16(vec2(n.z, 0.0))).x); }
+// An unsigned float with `mantissaBits` (B10G11R11: 6, 6, 5), rounded to nearest.
+float smallFloat(float x, float mantissaBits) {
+    if (!(x > 0.0)) return 0.0;
+    float step = exp2(max(floor(log2(x)), -14.0) - mantissaBits);
+    return min(round(x / step) * step, 65024.0);
+}
+vec3 storedEmissive(vec3 e) { return vec3(smallFloat(e.r, 6.0), smallFloat(e.g, 6.0), smallFloat(e.b, 5.0)); }
 
 // A draw's triangle in world space (as the G-buffer's vertex shader transforms it).
 struct HitTriangle {
@@ -212,6 +219,8 @@ vec4 shadeHit(ReflectorData plane, vec3 n, ivec2 pix, vec3 origin, vec3 dir, flo
     footprint = Footprint(materialUvDelta(m, footprint.coarseX), materialUvDelta(m, footprint.coarseY), materialUvDelta(m, footprint.fineX),
                           materialUvDelta(m, footprint.fineY));
     vec4 baseColor = m.baseColor * sampleMaterial(m.baseColorTex, uv, footprint, vec4(1.0));
+    if ((d.flags & kDrawVertexColors) != 0u)
+        baseColor *= vertexColor(h.v0.color) * b.x + vertexColor(h.v1.color) * b.y + vertexColor(h.v2.color) * b.z;
     vec4 mr = sampleMaterial(m.metalRoughTex, uv, footprint, vec4(1.0));
 
     // The G-buffer's rules: two-sided (the side facing the viewer, by winding, as the rasterizer
@@ -234,7 +243,8 @@ vec4 shadeHit(ReflectorData plane, vec3 n, ivec2 pix, vec3 origin, vec3 dir, flo
 
     // Lit as the lighting pass lights it, seen from the mirrored eye: the view vector is −dir.
     float shadow;
-    vec3 color = shadeSurface(hit, shadingNormal, -dir, albedo, roughness, metallic, shadow);
+    vec3 color = shadeSurface(hit, shadingNormal, -dir, albedo, roughness, metallic, shadow) +
+                 storedEmissive(m.emissive * sampleMaterial(m.emissiveTex, uv, footprint, vec4(1.0)).rgb);
     float kind = kReflectionOffscreen;
     if (hitReflectorId(draw, hit, eyeDistance + t) != 0u) kind = kReflectionSecondary;
     else if (visibleInMainView(depthTex, hit, sn)) kind = kReflectionHit;
@@ -244,10 +254,14 @@ vec4 shadeHit(ReflectorData plane, vec3 n, ivec2 pix, vec3 origin, vec3 dir, flo
 // Whether a candidate hit on an alpha-masked surface (the only non-opaque geometry) is kept: its base
 // colour alpha at the hit, read from the finest mip level, against the material's cutoff.
 bool passesAlphaMask(uint draw, uint prim, vec2 bary) {
-    MaterialData m = materials[draws[draw].material];
+    DrawData d = draws[draw];
+    MaterialData m = materials[d.material];
     HitTriangle h = hitTriangle(draw, prim);
-    vec2 uv = materialUv(m, h.v0.uv * (1.0 - bary.x - bary.y) + h.v1.uv * bary.x + h.v2.uv * bary.y);
+    float b0 = 1.0 - bary.x - bary.y;
+    vec2 uv = materialUv(m, h.v0.uv * b0 + h.v1.uv * bary.x + h.v2.uv * bary.y);
     float alpha = m.baseColor.a;
+    if ((d.flags & kDrawVertexColors) != 0u)
+        alpha *= vertexColor(h.v0.color).a * b0 + vertexColor(h.v1.color).a * bary.x + vertexColor(h.v2.color).a * bary.y;
     if (m.baseColorTex != kNoTexture) alpha *= textureLod(textures[nonuniformEXT(m.baseColorTex)], uv, 0.0).a;
     return alpha >= m.alphaCutoff;
 }

@@ -11,10 +11,13 @@ layout(set = 1, binding = 0) uniform sampler2D textures[];
 
 layout(location = 0) in vec2 vUv;
 layout(location = 1) flat in uint vDraw;
+layout(location = 2) in float vAlpha;
 
 void main() {
-    MaterialData m = materials[draws[vDraw].material];
+    DrawData d = draws[vDraw];
+    MaterialData m = materials[d.material];
     float alpha = m.baseColor.a;
+    if ((d.flags & kDrawVertexColors) != 0u) alpha *= vAlpha;
     if (m.baseColorTex != kNoTexture) alpha *= texture(textures[nonuniformEXT(m.baseColorTex)], materialUv(m, vUv)).a;
     if (alpha < m.alphaCutoff) discard;
 }

@@ -11,12 +11,15 @@ layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;   // bound with the full vertex layout; unused here
 layout(location = 2) in vec4 inTangent;  // unused
 layout(location = 3) in vec2 inUv;
+layout(location = 4) in vec4 inColor;
 
 layout(location = 0) out vec2 vUv;
 layout(location = 1) flat out uint vDraw;
+layout(location = 2) out float vAlpha;  // COLOR_0's alpha
 
 void main() {
     vUv = inUv;
+    vAlpha = inColor.a;
     vDraw = pc.drawIndex;
     gl_Position = frame.lightViewProj * (draws[pc.drawIndex].world * vec4(inPosition, 1.0));
 }

@@ -71,6 +71,35 @@ TEST(Glass, PuddleSeenThroughGlassAndTheGlassReflectionMatchTheGroundTruth) {
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
 
+// Exporters merge a building's glazing into one draw, which no single pane's reflector holds (the
+// FZK-Haus, docs/scenes.md): the glass pass then finds each pixel's pane reflector itself. Panes
+// unbound from their draws must render exactly as bound ones, on both sides of the glass.
+TEST(Glass, PanesFoundPerPixelRenderAsPanesBoundPerDraw) {
+    const scene::Scene bound = scene::loadGltf(PPR_DEFAULT_SCENE_FILE);
+    scene::Scene unbound = bound;
+    size_t glassDraws = 0;
+    for (scene::DrawItem& d : unbound.draws) {
+        const int material = unbound.meshes[d.mesh].material;
+        if (material < 0 || !unbound.materials[size_t(material)].transparent || d.reflector < 0) continue;
+        d.reflector = -1;                  // no load-time binding,
+        d.nodeName += "_merged";           // no reflector named like the node,
+        unbound.materials[size_t(material)].reflective = false;  // and no binding by geometry
+        ++glassDraws;
+    }
+    ASSERT_GE(glassDraws, 1u);
+    auto frame = [](const scene::Scene& s, const char* camera, const char* glass) {
+        GpuFixture f{scene::Scene(s)};
+        f.headless->settings().set("glass", glass);
+        util::Rgba8Image image = render(f, "ppr", f.camera(camera)).image;
+        EXPECT_EQ(f.ctx->validationErrors(), 0u);
+        return image;
+    };
+    auto same = [](const util::Rgba8Image& a, const util::Rgba8Image& b) { return a.pixels == b.pixels; };
+    EXPECT_FALSE(same(frame(bound, "glass", "1"), frame(bound, "glass", "0"))) << "the pane should reflect";
+    for (const char* camera : {"glass", "overview"})
+        EXPECT_TRUE(same(frame(bound, camera, "1"), frame(unbound, camera, "1"))) << camera;
+}
+
 TEST(Glass, OverlappingPanelsKeepToTheirOwnRegions) {
     GpuFixture f;
     const float exposure = static_cast<float>(f.headless->settings().number("exposure"));

@@ -410,6 +410,93 @@ TEST(Gltf, AlphaMaskAndCutoff) {
     expectError([&] { loadGltf(writeGltf(dir, doc, "bad.gltf")); }, {"material 'Painted'", "alphaCutoff"});
 }
 
+// Appends `bytes` to the embedded buffer behind a new bufferView and accessor; returns the accessor.
+int appendAccessor(json& doc, const std::vector<uint8_t>& data, json accessor) {
+    std::string uri = doc["buffers"][0]["uri"];
+    const std::string prefix = uri.substr(0, uri.find(',') + 1);
+    std::vector<uint8_t> bytes = unbase64(uri.substr(prefix.size()));
+    bytes.resize((bytes.size() + 3) & ~size_t(3));  // 4-byte aligned
+    const size_t at = bytes.size();
+    bytes.insert(bytes.end(), data.begin(), data.end());
+    doc["buffers"][0]["uri"] = prefix + base64(bytes);
+    doc["buffers"][0]["byteLength"] = bytes.size();
+    doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", at}, {"byteLength", data.size()}});
+    accessor["bufferView"] = doc["bufferViews"].size() - 1;
+    doc["accessors"].push_back(accessor);
+    return int(doc["accessors"].size() - 1);
+}
+
+// COLOR_0 (VEC4 normalized bytes, VEC3 floats) as 16-bit unorm per vertex; meshes without it white.
+TEST(Gltf, VertexColoursMultiplyTheBaseColour) {
+    TempDir dir;
+    json doc = quadJson();
+    const std::vector<uint8_t> bytes = {255, 0, 0, 255, 0, 255, 0, 128, 0, 0, 255, 0, 51, 102, 153, 204};
+    doc["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] =
+        appendAccessor(doc, bytes, {{"componentType", 5121}, {"normalized", true}, {"count", 4}, {"type", "VEC4"}});
+    const Scene s = loadGltf(writeGltf(dir, doc));
+    const Mesh& quad = s.meshes[s.draws[0].mesh];
+    ASSERT_TRUE(quad.vertexColors);
+    const Vertex* v = &s.vertices[size_t(quad.vertexOffset)];
+    EXPECT_EQ(v[0].color, glm::u16vec4(65535, 0, 0, 65535));
+    EXPECT_EQ(v[1].color, glm::u16vec4(0, 65535, 0, 32896));  // 128 / 255
+    EXPECT_EQ(v[3].color, glm::u16vec4(13107, 26214, 39321, 52428));
+    const Mesh& plain = s.meshes[drawOf(s, "Plain").mesh];
+    EXPECT_FALSE(plain.vertexColors);
+    EXPECT_EQ(s.vertices[size_t(plain.vertexOffset)].color, glm::u16vec4(65535));
+
+    json floats = quadJson();
+    std::vector<uint8_t> raw(4 * 12);
+    const float rgb[12] = {0.5f, 0.25f, 2.0f, 0, 0, 0, 1, 1, 1, 0.1f, 0.2f, 0.3f};
+    std::memcpy(raw.data(), rgb, sizeof rgb);
+    const int accessor = appendAccessor(floats, raw, {{"componentType", 5126}, {"count", 4}, {"type", "VEC3"}});
+    floats["meshes"][0]["primitives"][0]["attributes"]["COLOR_0"] = accessor;
+    const Scene f = loadGltf(writeGltf(dir, floats, "floats.gltf"));
+    const Vertex& first = f.vertices[size_t(f.meshes[f.draws[0].mesh].vertexOffset)];
+    EXPECT_EQ(first.color, glm::u16vec4(32768, 16384, 65535, 65535));  // clamped to 1; VEC3 is opaque
+
+    floats["accessors"][size_t(accessor)]["type"] = "SCALAR";
+    floats["accessors"][size_t(accessor)]["count"] = 4;
+    expectError([&] { loadGltf(writeGltf(dir, floats, "bad.gltf")); }, {"mesh 'ReflectiveQuad' primitive 0: COLOR_0", "VEC3/VEC4"});
+}
+
+// emissiveFactor × KHR_materials_emissive_strength, the emissive texture sRGB, bad values refused.
+TEST(Gltf, EmissiveFactorStrengthAndTexture) {
+    TempDir dir;
+    json doc = quadJson();
+    doc["materials"][1]["emissiveFactor"] = {1.0, 0.5, 0.0};
+    doc["materials"][1]["emissiveTexture"] = {{"index", 0}};
+    doc["materials"][1]["extensions"]["KHR_materials_emissive_strength"] = {{"emissiveStrength", 4.0}};
+    doc["materials"][0]["emissiveTexture"] = {{"index", 0}};  // under the default factor 0: emits nothing
+    doc["extensionsUsed"] = {"KHR_materials_emissive_strength"};
+    const Scene s = loadGltf(writeGltf(dir, doc));
+    expectVec(s.materials[1].emissiveFactor, {4, 2, 0}, 0.0f);
+    ASSERT_GE(s.materials[1].emissiveTexture, 0);
+    EXPECT_TRUE(s.textures[size_t(s.materials[1].emissiveTexture)].srgb);
+    expectVec(s.materials[0].emissiveFactor, {0, 0, 0}, 0.0f);
+    EXPECT_EQ(s.materials[0].emissiveTexture, -1);
+
+    doc["materials"][1]["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] = -2.0;
+    expectError([&] { loadGltf(writeGltf(dir, doc, "bad.gltf")); },
+                {"material 'Painted' KHR_materials_emissive_strength: emissiveStrength: expected a finite number >= 0"});
+    doc["materials"][1]["extensions"].erase("KHR_materials_emissive_strength");
+    doc["materials"][1]["emissiveFactor"] = {1.0, -0.5, 0.0};
+    expectError([&] { loadGltf(writeGltf(dir, doc, "bad2.gltf")); }, {"material 'Painted': emissiveFactor: expected finite numbers >= 0"});
+}
+
+// Required extensions the loader implements load; an unknown optional one is named on one line.
+TEST(Gltf, SupportedExtensionsMayBeRequiredUnknownOptionalOnesWarn) {
+    TempDir dir;
+    json doc = quadJson();
+    doc["extensionsUsed"] = {"KHR_texture_transform", "EXT_not_a_real_extension"};
+    doc["extensionsRequired"] = {"KHR_texture_transform"};
+    const std::string path = writeGltf(dir, doc);
+    testing::internal::CaptureStderr();
+    const Scene s = loadGltf(path);
+    const std::string err = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(s.draws.size(), 4u);
+    EXPECT_EQ(err, path + ": extensionsUsed: 'EXT_not_a_real_extension' is not supported; ignored\n");
+}
+
 TEST(Gltf, PointsAndLinesAreSkipped) {
     TempDir dir;
     json doc = quadJson();

@@ -55,9 +55,10 @@ TEST(ReflectShaders, PprProjectHasTwelveBindingsInOrder) {
 }
 
 TEST(ReflectShaders, LightingSamplersAndStorageImage) {
-    // sampler2DShadow is a combined image sampler too; the output is a storage image; no push block.
+    // sampler2DShadow is a combined image sampler too; the output is a storage image (before the
+    // emissive target, added later); no push block.
     const ReflectedLayout r = reflectSpirv(words(lighting_comp), "lighting.comp");
-    EXPECT_EQ(typesOf(r, 0), (std::vector<VkDescriptorType>{UBO, CIS, CIS, CIS, CIS, CIS, SI}));
+    EXPECT_EQ(typesOf(r, 0), (std::vector<VkDescriptorType>{UBO, CIS, CIS, CIS, CIS, CIS, SI, CIS}));  // then gbuffer.emissive
     EXPECT_EQ(r.sets.at(0).at(0).type, UBO);
     EXPECT_FALSE(r.pushConstantBytes.has_value());
 }
