@@ -96,6 +96,8 @@ std::string usage() {
            "    --max-roughness R  fit: materials with roughness factor <= R (with --materials: both must hold;\n"
            "                       neither: the materials marked reflective, extras \"ppr_reflective\")\n"
            "    --min-area A       fit: drop flat regions under A square metres (default 0.05)\n"
+           "    --append           fit: keep the reflectors already in the output file and add these after them\n"
+           "                       (e.g. floors at one --min-area, then glazing at another)\n"
            "options:\n"
            "  --scene FILE         .gltf or .glb, or stress:N (N = 1..4096 mirror tiles; default: the built-in default scene)\n"
            "  --reflectors FILE    reflector JSON (default: <scene>.reflectors.json or glTF node extras)\n"
@@ -156,6 +158,7 @@ static Options parseArguments(int argc, const char* const* argv) {
         else if (a == "--materials") o.fitMaterials = value(a);
         else if (a == "--max-roughness") o.fitMaxRoughness = parseFloat(a, value(a), 0.0f, 1.0f);
         else if (a == "--min-area") o.fitMinArea = parseFloat(a, value(a), 0.0f, 1e10f);
+        else if (a == "--append") o.fitAppend = true;
         else if (a == "--validation") o.validation = true;
         else if (a == "--dump-graph") o.dumpGraph = true;
         else if (a == "--frames") o.frames = parseUnsigned(a, value(a), 1, kMaxFrames);
@@ -195,8 +198,8 @@ static Options parseArguments(int argc, const char* const* argv) {
             throw std::runtime_error("unknown option '" + a + "' (see ppr --help)");
         }
     }
-    if (o.mode != Mode::Fit && (o.fitMaterials || o.fitMaxRoughness || o.fitMinArea != Options{}.fitMinArea))
-        throw std::runtime_error("--materials, --max-roughness and --min-area belong to ppr fit");
+    if (o.mode != Mode::Fit && (o.fitMaterials || o.fitMaxRoughness || o.fitMinArea != Options{}.fitMinArea || o.fitAppend))
+        throw std::runtime_error("--materials, --max-roughness, --min-area and --append belong to ppr fit");
     if (o.mode == Mode::Fit && o.outGiven && o.out.empty()) throw std::runtime_error("--out: expected a file name");
     if (!o.path.empty() && o.mode != Mode::Capture && o.mode != Mode::Compare)
         throw std::runtime_error("--path " + o.path + ": only capture and compare render camera paths");

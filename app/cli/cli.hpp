@@ -37,6 +37,7 @@ struct Options {
     std::optional<std::string> fitMaterials;  // --materials REGEX
     std::optional<float> fitMaxRoughness;     // --max-roughness R
     float fitMinArea = 0.05f;                 // --min-area A (m²)
+    bool fitAppend = false;                   // --append: keep the reflectors already in the output file
 };
 
 // A technique with its own settings: "ppr@normalmap=off,holes=0" (compare and bench rows, capture).

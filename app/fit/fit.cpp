@@ -4,6 +4,7 @@
 #include "scene/planar_regions.hpp"
 #include "scene/stress_scene.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <regex>
@@ -58,21 +59,36 @@ int runFit(const Options& o) {
     ro.minArea = o.fitMinArea;
     const scene::PlanarRegionResult result = scene::fitPlanarRegions(scene, ro);
 
-    std::printf("%-24s %-24s %-6s %10s %10s %6s %10s %9s\n", "reflector", "material", "kind", "area m2", "rect m2", "fill", "off-plane", "triangles");
+    const std::string path = fitOutputPath(o);
     std::vector<scene::Reflector> reflectors;
+    if (o.fitAppend && std::filesystem::exists(path)) reflectors = scene::loadReflectorFile(path);  // throws naming the file
+    const size_t kept = reflectors.size();
+    // An appended region whose name is taken gets the first free "<name>_<n>".
+    auto freeName = [&](const std::string& name) {
+        auto taken = [&](const std::string& n) {
+            return std::any_of(reflectors.begin(), reflectors.end(), [&](const scene::Reflector& r) { return r.name == n; });
+        };
+        std::string candidate = name;
+        for (int n = 2; taken(candidate); ++n) candidate = name + "_" + std::to_string(n);
+        return candidate;
+    };
+
+    std::printf("%-24s %-24s %-6s %10s %10s %6s %10s %9s\n", "reflector", "material", "kind", "area m2", "rect m2", "fill", "off-plane", "triangles");
     for (const scene::FittedRegion& r : result.regions) {
+        scene::Reflector reflector = r.reflector;
+        reflector.name = freeName(reflector.name);
         const std::string& material = scene.materials[size_t(r.material)].name;
-        std::printf("%-24s %-24s %-6s %10.3f %10.3f %6.3f %7.2f mm %9u\n", r.reflector.name.c_str(), material.c_str(),
-                    r.reflector.kind == scene::ReflectorKind::Glass ? "glass" : "opaque", r.area, r.rectangleArea,
+        std::printf("%-24s %-24s %-6s %10.3f %10.3f %6.3f %7.2f mm %9u\n", reflector.name.c_str(), material.c_str(),
+                    reflector.kind == scene::ReflectorKind::Glass ? "glass" : "opaque", r.area, r.rectangleArea,
                     r.rectangleArea > 0.0 ? r.area / r.rectangleArea : 0.0, 1000.0 * r.maxPlaneDistance, r.triangles);
-        reflectors.push_back(r.reflector);
+        reflectors.push_back(std::move(reflector));
     }
-    std::printf("%zu reflectors; %u regions under --min-area %.3g m2 dropped, %u not flat within %.1f mm refused\n", reflectors.size(),
+    std::printf("%zu reflectors; %u regions under --min-area %.3g m2 dropped, %u not flat within %.1f mm refused\n", reflectors.size() - kept,
                 result.droppedSmall, double(ro.minArea), result.refused, 2000.0 * double(ro.planeTolerance));
+    if (kept > 0) std::printf("%zu reflectors kept from %s (--append): %zu in all\n", kept, path.c_str(), reflectors.size());
     if (reflectors.size() > scene::kMaxReflectors)
         throw std::runtime_error(scene.sourcePath + ": " + std::to_string(reflectors.size()) + " regions fitted, more than a reflector file holds (" +
                                  std::to_string(scene::kMaxReflectors) + "); raise --min-area or narrow --materials");
-    const std::string path = fitOutputPath(o);
     const std::filesystem::path parent = std::filesystem::path(path).parent_path();
     if (!parent.empty()) {
         std::error_code ec;

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 
@@ -64,6 +65,19 @@ TEST(Cli, FitWritesAReflectorFileThatRenders) {
     size_t differing = 0;
     for (size_t i = 0; i < a.pixels.size(); i += 4) differing += std::memcmp(&a.pixels[i], &b.pixels[i], 3) != 0;
     EXPECT_LT(differing, a.pixels.size() / 4 / 100) << "more than 1 % of the pixels changed with the fitted reflectors";
+
+    // --append keeps what the file holds and adds after it, renaming what collides: the mirrors
+    // fitted again over the 20 come back as "mirror_2" and "mirror_wavy_2".
+    RunResult append = runPpr("fit --materials '^mirror' --append --out " + (dir / "fit.reflectors.json").string());
+    ASSERT_EQ(append.exitCode, 0) << append.output;
+    EXPECT_NE(append.output.find("20 reflectors kept from"), std::string::npos) << append.output;
+    const std::vector<scene::Reflector> appended = scene::loadReflectorFile((dir / "fit.reflectors.json").string());
+    ASSERT_GT(appended.size(), fitted.size());
+    for (size_t i = 0; i < fitted.size(); ++i) EXPECT_EQ(appended[i].name, fitted[i].name);
+    std::vector<std::string> added;
+    for (size_t i = fitted.size(); i < appended.size(); ++i) added.push_back(appended[i].name);
+    EXPECT_NE(std::find(added.begin(), added.end(), "mirror_2"), added.end()) << append.output;
+    EXPECT_NE(std::find(added.begin(), added.end(), "mirror_wavy_2"), added.end()) << append.output;
 
     RunResult none = runPpr("fit --materials nothing_matches --out " + (dir / "none.json").string());
     EXPECT_EQ(none.exitCode, 2);

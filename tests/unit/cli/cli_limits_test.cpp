@@ -55,6 +55,9 @@ TEST(CliLimits, FitOptions) {
     EXPECT_EQ(errorOf({"ppr", "fit", "--min-area", "nan"}), "--min-area nan: expected a number");
     EXPECT_EQ(errorOf({"ppr", "fit", "--min-area", "1e99"}), "--min-area 1e99: expected a number");
     EXPECT_EQ(errorOf({"ppr", "fit", "--min-area", "-1"}), "--min-area -1: out of range (0..1e+10)");
-    EXPECT_EQ(errorOf({"ppr", "capture", "--materials", "x"}), "--materials, --max-roughness and --min-area belong to ppr fit");
+    EXPECT_EQ(errorOf({"ppr", "capture", "--materials", "x"}), "--materials, --max-roughness, --min-area and --append belong to ppr fit");
+    EXPECT_EQ(errorOf({"ppr", "view", "--append"}), "--materials, --max-roughness, --min-area and --append belong to ppr fit");
+    EXPECT_FALSE(o.fitAppend);
+    EXPECT_TRUE(parse({"ppr", "fit", "--append"}).fitAppend);
     EXPECT_EQ(errorOf({"ppr", "fit", "--out", ""}), "--out: expected a file name");
 }
