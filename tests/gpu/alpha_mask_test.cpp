@@ -3,18 +3,11 @@
 // Validation + synchronization validation on.
 #include "gpu_test_util.hpp"
 
-#include <cstring>
 
 namespace ppr::test {
 namespace {
 
 constexpr VkExtent2D kSize{320, 180};
-
-int materialNamed(const scene::Scene& s, const std::string& name) {
-    for (size_t i = 0; i < s.materials.size(); ++i)
-        if (s.materials[i].name == name) return int(i);
-    throw std::runtime_error("test: no material " + name);
-}
 
 util::Rgba8Image render(scene::Scene s, const std::string& camera, const std::string& technique = "ppr", VkExtent2D size = kSize) {
     GpuFixture f(std::move(s));
@@ -22,10 +15,6 @@ util::Rgba8Image render(scene::Scene s, const std::string& camera, const std::st
     util::Rgba8Image image = f.headless->capture(f.camera(camera), size, 1).image;
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
     return image;
-}
-
-bool identical(const util::Rgba8Image& a, const util::Rgba8Image& b) {
-    return a.pixels.size() == b.pixels.size() && std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size()) == 0;
 }
 
 // The red material (crates and a sphere, seen in the puddles, casting shadows) cut out everywhere, and

@@ -94,10 +94,9 @@ TEST(Glass, PanesFoundPerPixelRenderAsPanesBoundPerDraw) {
         EXPECT_EQ(f.ctx->validationErrors(), 0u);
         return image;
     };
-    auto same = [](const util::Rgba8Image& a, const util::Rgba8Image& b) { return a.pixels == b.pixels; };
-    EXPECT_FALSE(same(frame(bound, "glass", "1"), frame(bound, "glass", "0"))) << "the pane should reflect";
+    EXPECT_FALSE(identical(frame(bound, "glass", "1"), frame(bound, "glass", "0"))) << "the pane should reflect";
     for (const char* camera : {"glass", "overview"})
-        EXPECT_TRUE(same(frame(bound, camera, "1"), frame(unbound, camera, "1"))) << camera;
+        EXPECT_TRUE(identical(frame(bound, camera, "1"), frame(unbound, camera, "1"))) << camera;
 }
 
 TEST(Glass, OverlappingPanelsKeepToTheirOwnRegions) {

@@ -49,6 +49,18 @@ struct GpuFixture {
     }
 };
 
+// The index of the scene's material called `name` (throws when there is none).
+inline int materialNamed(const scene::Scene& s, const std::string& name) {
+    for (size_t i = 0; i < s.materials.size(); ++i)
+        if (s.materials[i].name == name) return int(i);
+    throw std::runtime_error("test: no material " + name);
+}
+
+// Byte-for-byte equality of two images.
+inline bool identical(const util::Rgba8Image& a, const util::Rgba8Image& b) {
+    return a.width == b.width && a.height == b.height && a.pixels == b.pixels;
+}
+
 // Standard deviation of luma over the image (0..255).
 inline double lumaStdDev(const util::Rgba8Image& img) {
     double sum = 0, sum2 = 0;

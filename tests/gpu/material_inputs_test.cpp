@@ -8,23 +8,12 @@
 #include "tonemap/tonemap.h"
 
 #include <cmath>
-#include <cstring>
 #include <set>
 
 namespace ppr::test {
 namespace {
 
 constexpr VkExtent2D kSize{320, 180};
-
-int materialNamed(const scene::Scene& s, const std::string& name) {
-    for (size_t i = 0; i < s.materials.size(); ++i)
-        if (s.materials[i].name == name) return int(i);
-    throw std::runtime_error("test: no material " + name);
-}
-
-bool identical(const util::Rgba8Image& a, const util::Rgba8Image& b) {
-    return a.pixels.size() == b.pixels.size() && std::memcmp(a.pixels.data(), b.pixels.data(), a.pixels.size()) == 0;
-}
 
 app::CaptureResult capture(GpuFixture& f, const std::string& technique, const std::string& camera) {
     f.headless->setTechnique(technique);
