@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # The soak (docs/reliability.md): memory must be flat after warm-up.
 #   scripts/soak.sh [--frames N] [--viewer-seconds S] [--size WxH] [--ppr EXE] [--no-viewer]
-# 1. Headless: `ppr capture` of N frames (default 10 000) per technique at a small size, printing a
-#    memory sample every 500 frames (PPR_MEMORY_LOG); growth is measured from frame 1000 (warm-up) to
-#    the end and reported per 1 000 frames.
+# 1. Headless: `ppr capture` of N frames (default 2 300) per technique at a small size, printing a
+#    memory sample every 100 frames (PPR_MEMORY_LOG); growth is measured from frame 1 000 (warm-up:
+#    each technique's resident memory takes one step somewhere before frame 900, docs/reliability.md)
+#    to the end and reported per 1 000 frames.
 # 2. Viewer: `ppr view` under Xvfb for S seconds (default 600) driving itself (PPR_VIEWER_SOAK=1:
 #    techniques, random setting values, window sizes from 1x1 up, iconify/restore).
 # --no-capture / --no-viewer skip a part. Prints a summary table; exit 1 if VMA allocations, bytes or Vulkan object counts grew after warm-up,
@@ -12,7 +13,7 @@
 set -uo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 ppr="$root/build/release/bin/ppr"
-frames=1300; seconds=600; size=64x64; viewer=1; rss_limit=64; warmup=300; every=100
+frames=2300; seconds=600; size=64x64; viewer=1; rss_limit=64; warmup=1000; every=100
 techniques=""
 capture=1
 while [ $# -gt 0 ]; do
