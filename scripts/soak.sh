@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The soak (docs/reliability.md): memory must be flat after warm-up.
 #   scripts/soak.sh [--frames N] [--viewer-seconds S] [--size WxH] [--ppr EXE] [--no-viewer]
-# 1. Headless: `ppr capture` of N frames (default 2 300) per technique at a small size, printing a
+# 1. Headless: `ppr capture` of N frames (default 5 000) per technique at a small size, printing a
 #    memory sample every 100 frames (PPR_MEMORY_LOG); growth is measured from frame 1 000 (warm-up:
 #    each technique's resident memory takes one step somewhere before frame 900, docs/reliability.md)
 #    to the end and reported per 1 000 frames.
@@ -13,7 +13,7 @@
 set -uo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 ppr="$root/build/release/bin/ppr"
-frames=2300; seconds=600; size=64x64; viewer=1; rss_limit=64; warmup=1000; every=100
+frames=5000; seconds=600; size=64x64; viewer=1; rss_limit=64; warmup=1000; every=100
 techniques=""
 capture=1
 while [ $# -gt 0 ]; do
