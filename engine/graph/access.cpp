@@ -68,6 +68,13 @@ AccessInfo accessInfo(Access access, QueueKind kind, bool depth) {
             return {VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, false};
         case Access::HostRead:
             return {VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT, VK_IMAGE_LAYOUT_GENERAL, false};
+        case Access::AccelerationStructureBuild:
+            // A build reads its scratch and (on update) its source as well as writing its destination.
+            return {VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                    VK_ACCESS_2_ACCELERATION_STRUCTURE_READ_BIT_KHR | VK_ACCESS_2_ACCELERATION_STRUCTURE_WRITE_BIT_KHR,
+                    VK_IMAGE_LAYOUT_UNDEFINED, true};
+        case Access::AccelerationStructureRead:
+            return {shader, VK_ACCESS_2_ACCELERATION_STRUCTURE_READ_BIT_KHR, VK_IMAGE_LAYOUT_UNDEFINED, false};
     }
     return {};
 }
@@ -97,6 +104,8 @@ VkBufferUsageFlags bufferUsageFor(Access access) {
         case Access::VertexRead: return VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_INDEX_BUFFER_BIT;
         case Access::TransferSrc: return VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
         case Access::TransferDst: return VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+        case Access::AccelerationStructureBuild:
+        case Access::AccelerationStructureRead: return VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR;
         default: return 0;
     }
 }
@@ -117,6 +126,8 @@ const char* accessName(Access access) {
         case Access::TransferDst: return "transferDst";
         case Access::Present: return "present";
         case Access::HostRead: return "hostRead";
+        case Access::AccelerationStructureBuild: return "accelerationStructureBuild";
+        case Access::AccelerationStructureRead: return "accelerationStructureRead";
     }
     return "unknown";
 }

@@ -24,6 +24,8 @@ enum class Access : uint8_t {
     TransferDst,          // copy / blit / clear destination
     Present,              // final state of a swapchain image (only as an import's final access)
     HostRead,             // final state of a read-back buffer (only as an import's final access)
+    AccelerationStructureBuild,  // vkCmdBuildAccelerationStructuresKHR: the structure's storage or its scratch
+    AccelerationStructureRead,   // ray queries (rayQueryInitializeEXT) against the structure
 };
 
 // Stage/access/layout one access needs, for a pass running on the given queue kind.

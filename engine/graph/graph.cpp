@@ -222,6 +222,12 @@ BufferHandle PassBuilder::storageWrite(BufferHandle h) { return next(h, graph_.d
 BufferHandle PassBuilder::storageReadWrite(BufferHandle h) { return next(h, graph_.declare(pass_, h.id, h.version, false, Access::StorageReadWrite)); }
 BufferHandle PassBuilder::uniformRead(BufferHandle h) { return next(h, graph_.declare(pass_, h.id, h.version, false, Access::UniformRead)); }
 BufferHandle PassBuilder::vertexRead(BufferHandle h) { return next(h, graph_.declare(pass_, h.id, h.version, false, Access::VertexRead)); }
+BufferHandle PassBuilder::accelerationStructureBuild(BufferHandle h) {
+    return next(h, graph_.declare(pass_, h.id, h.version, false, Access::AccelerationStructureBuild));
+}
+BufferHandle PassBuilder::accelerationStructureRead(BufferHandle h) {
+    return next(h, graph_.declare(pass_, h.id, h.version, false, Access::AccelerationStructureRead));
+}
 BufferHandle PassBuilder::indirectArgs(BufferHandle h) { return next(h, graph_.declare(pass_, h.id, h.version, false, Access::IndirectArgs)); }
 BufferHandle PassBuilder::transferSrc(BufferHandle h) { return next(h, graph_.declare(pass_, h.id, h.version, false, Access::TransferSrc)); }
 BufferHandle PassBuilder::transferDst(BufferHandle h) { return next(h, graph_.declare(pass_, h.id, h.version, false, Access::TransferDst)); }

@@ -135,6 +135,9 @@ public:
     BufferHandle storageReadWrite(BufferHandle h);
     BufferHandle uniformRead(BufferHandle h);
     BufferHandle vertexRead(BufferHandle h);
+    // An acceleration structure's storage (or a build's scratch) as a build writes it / a ray query reads it.
+    BufferHandle accelerationStructureBuild(BufferHandle h);
+    BufferHandle accelerationStructureRead(BufferHandle h);
     BufferHandle indirectArgs(BufferHandle h);  // pairs with PassContext::dispatchIndirect
     BufferHandle transferSrc(BufferHandle h);
     BufferHandle transferDst(BufferHandle h);

@@ -155,6 +155,29 @@ TEST(GraphBarriers, WriteAfterWriteAndReadWaitsForBoth) {
                                                   kStoreR | kStoreW)}));
 }
 
+// An animated scene's TLAS: last frame's ray queries read it, this frame rebuilds it and this
+// frame's ray queries read the new one. The build waits for the old readers (write after read) and
+// the readers for the build, at the acceleration-structure stages and accesses.
+TEST(GraphBarriers, AccelerationStructureRebuildBetweenRayQueries) {
+    constexpr VkPipelineStageFlags2 kBuild = VK_PIPELINE_STAGE_2_ACCELERATION_STRUCTURE_BUILD_BIT_KHR;
+    constexpr VkAccessFlags2 kAsRead = VK_ACCESS_2_ACCELERATION_STRUCTURE_READ_BIT_KHR;
+    constexpr VkAccessFlags2 kAsWrite = VK_ACCESS_2_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
+    RenderGraph g;
+    ExternalBuffer storage{};
+    storage.desc = {4096};
+    storage.state = {VK_IMAGE_LAYOUT_UNDEFINED, kCS, kAsRead};  // left by last frame's ray queries
+    BufferHandle tlas = g.importBuffer("tlas", &storage);
+    addPass(g, "build", QueueKind::Compute, [&](PassBuilder& b) { tlas = b.accelerationStructureBuild(tlas); });
+    addPass(g, "trace", QueueKind::Compute, [&](PassBuilder& b) {
+        b.accelerationStructureRead(tlas);
+        b.sideEffect();
+    });
+    g.compile();
+    EXPECT_EQ(barriersOf(g, 0), (Barriers{barrier(tlas.id, false, kCS, VK_ACCESS_2_NONE, kBuild, kAsRead | kAsWrite)}));
+    EXPECT_EQ(barriersOf(g, 1), (Barriers{barrier(tlas.id, false, kBuild, kAsWrite, kCS, kAsRead)}));
+    EXPECT_EQ(bufferUsageFor(Access::AccelerationStructureBuild), VkBufferUsageFlags(VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR));
+}
+
 // (e) render into the swapchain, copy it to a read-back buffer, then present.
 TEST(GraphBarriers, ColorThenTransferSrcThenPresent) {
     RenderGraph g;
