@@ -62,13 +62,29 @@ public:
     }
 
     // Ordinary geometry, optionally turned about +Y by `yawDeg` (counter-clockwise seen from above).
-    void object(const std::string& name, int mesh, const glm::dvec3& t, double yawDeg = 0.0) {
+    int object(const std::string& name, int mesh, const glm::dvec3& t, double yawDeg = 0.0) {
         NodeDesc n;
         n.name = name;
         n.mesh = mesh;
         n.translation = t;
         if (yawDeg != 0.0) n.rotation = glm::angleAxis(yawDeg * kDeg, glm::dvec3(0, 1, 0));
-        w_.addNode(n);
+        return w_.addNode(n);
+    }
+
+    // Node `node` (at rest at `t`) rises `height` metres and comes back every `period` seconds: a
+    // raised cosine in `keys` LINEAR keys, so time 0 and the end of each loop are the rest pose.
+    void bob(const std::string& name, int node, const glm::dvec3& t, double height, double period, int keys) {
+        AnimationDesc a;
+        a.name = name;
+        a.node = node;
+        a.path = "translation";
+        for (int k = 0; k < keys; ++k) {
+            const double time = period * k / (keys - 1);
+            const double y = t.y + 0.5 * height * (1.0 - std::cos(2.0 * kPi * time / period));
+            a.times.push_back(static_cast<float>(time));
+            a.values.insert(a.values.end(), {static_cast<float>(t.x), static_cast<float>(y), static_cast<float>(t.z)});
+        }
+        w_.addAnimation(std::move(a));
     }
 
     // A reflective surface: node at `t` with no rotation, reflector given in node space. Refuses
@@ -328,7 +344,10 @@ void buildFlowerpotCorner(Layout& L, const Materials& M) {
 
     MeshData ball;
     addSphere(ball, {0.0f, 0.0f, 0.0f}, 0.3f, 40, 20, 1.0f);
-    L.object("ball_red", L.mesh(ball, "ball_red", M.red), {-1.8, 0.3, -1.0});
+    const glm::dvec3 ballRest(-1.8, 0.3, -1.0);
+    const int ballNode = L.object("ball_red", L.mesh(ball, "ball_red", M.red), ballRest);
+    // It bobs so that TAA and the reflections of moving things are tested with it (at rest at time 0).
+    L.bob("ball_red_bob", ballNode, ballRest, 0.5, 2.0, 17);
 }
 
 void buildPuddles(Layout& L, const Materials& M) {

@@ -99,6 +99,17 @@ int GltfWriter::addNode(const NodeDesc& n) {
     return static_cast<int>(nodes_.size() - 1);
 }
 
+int GltfWriter::addAnimation(AnimationDesc a) {
+    const size_t perKey = a.path == "rotation" ? 4 : 3;
+    if (a.path != "translation" && a.path != "rotation" && a.path != "scale") throw std::logic_error("animation " + a.name + ": bad path");
+    if (a.node < 0 || static_cast<size_t>(a.node) >= nodes_.size()) throw std::logic_error("animation " + a.name + ": bad node");
+    if (a.times.empty() || a.values.size() != a.times.size() * perKey) throw std::logic_error("animation " + a.name + ": bad key count");
+    for (size_t k = 1; k < a.times.size(); ++k)
+        if (!(a.times[k] > a.times[k - 1])) throw std::logic_error("animation " + a.name + ": times not increasing");
+    animations_.push_back(std::move(a));
+    return static_cast<int>(animations_.size() - 1);
+}
+
 void GltfWriter::write(const std::string& dir, const std::string& stem) const {
     std::vector<uint8_t> bin;
     Json bufferViews = Json::array(), accessors = Json::array(), meshes = Json::array();
@@ -107,7 +118,9 @@ void GltfWriter::write(const std::string& dir, const std::string& stem) const {
                            int target, Json minMax = nullptr) {
         const size_t bytes = count * static_cast<size_t>(components) * 4;
         const size_t offset = appendBytes(bin, data, bytes);
-        bufferViews.push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes}, {"target", target}});
+        Json view = {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes}};
+        if (target != 0) view["target"] = target;  // animation data is neither vertices nor indices
+        bufferViews.push_back(view);
         Json a;
         a["bufferView"] = bufferViews.size() - 1;
         a["componentType"] = componentType;
@@ -144,6 +157,18 @@ void GltfWriter::write(const std::string& dir, const std::string& stem) const {
         prim["mode"] = 4;  // TRIANGLES
         meshes.push_back({{"name", m.name}, {"primitives", Json::array({prim})}});
     }
+    // After the meshes, so adding an animation leaves every mesh byte where it was.
+    Json animations = Json::array();
+    for (const AnimationDesc& a : animations_) {
+        // glTF requires min/max on an animation's input.
+        const Json bounds = Json::array({Json::array({exact(a.times.front())}), Json::array({exact(a.times.back())})});
+        const int input = addAccessor(a.times.data(), a.times.size(), 1, kFloat, "SCALAR", 0, bounds);
+        const bool rotation = a.path == "rotation";
+        const int output = addAccessor(a.values.data(), a.times.size(), rotation ? 4 : 3, kFloat, rotation ? "VEC4" : "VEC3", 0);
+        Json sampler = {{"input", input}, {"interpolation", "LINEAR"}, {"output", output}};
+        Json channel = {{"sampler", 0}, {"target", {{"node", a.node}, {"path", a.path}}}};
+        animations.push_back({{"name", a.name}, {"channels", Json::array({channel})}, {"samplers", Json::array({sampler})}});
+    }
 
     Json gltf;
     gltf["asset"] = {{"version", "2.0"}, {"generator", "ppr_make_default_scene"}};
@@ -157,6 +182,7 @@ void GltfWriter::write(const std::string& dir, const std::string& stem) const {
     gltf["cameras"] = cameras_;
     gltf["meshes"] = meshes;
     gltf["materials"] = materials_;
+    if (!animations.empty()) gltf["animations"] = animations;
     Json textures = Json::array(), images = Json::array();
     for (size_t i = 0; i < images_.size(); ++i) {
         images.push_back({{"uri", images_[i]}, {"mimeType", "image/png"}});

@@ -1,7 +1,7 @@
 #pragma once
 // Minimal glTF 2.0 writer: one external .bin buffer, one bufferView per accessor, external PNG
-// images, flat node list (all nodes are scene roots). JSON uses insertion-ordered objects and
-// numbers rounded to 1e-6 so the output is byte-stable and diff-friendly.
+// images, flat node list (all nodes are scene roots), LINEAR node animations. JSON uses
+// insertion-ordered objects and numbers rounded to 1e-6 so the output is byte-stable and diff-friendly.
 #include "mesh_builder.hpp"
 
 #include <glm/glm.hpp>
@@ -38,6 +38,15 @@ struct NodeDesc {
     Json extras;  // null = none
 };
 
+// One animation with one LINEAR channel on one node.
+struct AnimationDesc {
+    std::string name;
+    int node = -1;
+    std::string path;           // "translation", "scale" (3 values per key) or "rotation" (4: x, y, z, w)
+    std::vector<float> times;   // seconds, from 0, increasing
+    std::vector<float> values;  // per key, in key order
+};
+
 class GltfWriter {
 public:
     int addTexture(const std::string& uri);  // image + texture sharing one repeat/trilinear sampler
@@ -48,6 +57,7 @@ public:
     // (sin yaw·cos pitch, sin pitch, −cos yaw·cos pitch), the --camera convention.
     int addCameraNode(const std::string& name, const glm::dvec3& position, double yawDeg, double pitchDeg);
     int addNode(const NodeDesc& node);
+    int addAnimation(AnimationDesc animation);  // its data follows the meshes' in the .bin
     void setSceneExtras(Json extras) { sceneExtras_ = std::move(extras); }
     const MeshData& mesh(int index) const { return meshes_[static_cast<size_t>(index)]; }
 
@@ -59,6 +69,7 @@ private:
     std::vector<Json> materials_, cameras_, nodes_;
     std::vector<MeshData> meshes_;
     std::vector<int> meshMaterials_;
+    std::vector<AnimationDesc> animations_;
     Json sceneExtras_;
 };
 

@@ -58,6 +58,15 @@ bool typeAllowed(const tinygltf::Accessor& a, AccessorKind kind, std::string& ex
         return (a.type == TINYGLTF_TYPE_VEC3 || a.type == TINYGLTF_TYPE_VEC4) &&
                (c == TINYGLTF_COMPONENT_TYPE_FLOAT ||
                 (a.normalized && (c == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || c == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT)));
+    case AccessorKind::ScalarFloat:
+        expected = "FLOAT SCALAR";
+        return a.type == TINYGLTF_TYPE_SCALAR && c == TINYGLTF_COMPONENT_TYPE_FLOAT;
+    case AccessorKind::Rotation:
+        expected = "VEC4 of FLOAT or normalized BYTE/UNSIGNED_BYTE/SHORT/UNSIGNED_SHORT";
+        return a.type == TINYGLTF_TYPE_VEC4 &&
+               (c == TINYGLTF_COMPONENT_TYPE_FLOAT ||
+                (a.normalized && (c == TINYGLTF_COMPONENT_TYPE_BYTE || c == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                  c == TINYGLTF_COMPONENT_TYPE_SHORT || c == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT)));
     case AccessorKind::Index:
         expected = "SCALAR of UNSIGNED_BYTE/UNSIGNED_SHORT/UNSIGNED_INT";
         return a.type == TINYGLTF_TYPE_SCALAR &&

@@ -22,7 +22,8 @@ struct GltfFile {
 };
 
 // --- accessors (gltf_accessors.cpp): every range is checked before a byte is read.
-enum class AccessorKind { Vec3Float, Vec4Float, TexCoord, Color, Index };
+// ScalarFloat: animation times; Rotation: animation quaternions (FLOAT or normalized integer VEC4).
+enum class AccessorKind { Vec3Float, Vec4Float, TexCoord, Color, Index, ScalarFloat, Rotation };
 struct AccessorView {
     const unsigned char* data = nullptr;  // into the glTF buffer, or into `owned`
     std::shared_ptr<const std::vector<unsigned char>> owned;  // a sparse accessor's elements, materialised
@@ -50,5 +51,16 @@ nlohmann::json toJson(const tinygltf::Value& value);
 bool nodeReflector(const GltfFile& file, int node, const glm::mat4& world, Reflector& out);
 
 std::string nodeLabel(const GltfFile& file, int node);  // "node 'Floor'" or "node 3"
+
+// --- animations (gltf_animation.cpp): what the node walk recorded, for Scene::animation.
+struct NodeTree {
+    std::vector<int> parent;        // per glTF node: its parent, -1 for a root or a node outside the scene
+    std::vector<glm::mat4> world;   // per glTF node: its rest world matrix (visited nodes only)
+    std::vector<int> order;         // visited glTF nodes, parents before children
+    std::vector<int> drawNode;      // per Scene::draws entry: the glTF node it came from
+};
+// Validates every channel (throws naming animation, channel and field) and fills scene.animation
+// with the draws whose node or an ancestor is animated.
+void loadAnimations(const GltfFile& file, const NodeTree& tree, Scene& scene);
 
 }  // namespace ppr::scene::detail

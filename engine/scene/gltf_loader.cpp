@@ -1,5 +1,6 @@
 // loadGltf: reads the file with tinygltf, walks the node tree of the chosen scene and flattens it
-// into draws, cameras and reflectors. Per-primitive work is in gltf_meshes.cpp.
+// into draws, cameras and reflectors. Per-primitive work is in gltf_meshes.cpp, the animation of the
+// draws that move in gltf_animation.cpp.
 #include "scene/errors.hpp"
 #include "scene/gltf_internal.hpp"
 #include "util/json_depth.hpp"
@@ -132,8 +133,9 @@ struct Traversal {
     bool reflectorsFromExtras;
     std::vector<char> state = std::vector<char>(file.model.nodes.size(), 0);  // 0 new, 1 on the path, 2 done
     std::map<std::pair<int, int>, int> primitiveMesh;                          // (mesh, primitive) → Scene::meshes or -1
+    NodeTree tree{std::vector<int>(file.model.nodes.size(), -1), std::vector<glm::mat4>(file.model.nodes.size()), {}, {}};
 
-    void visit(int index, const glm::mat4& parent, int depth, const std::string& from) {
+    void visit(int index, int parentNode, const glm::mat4& parent, int depth, const std::string& from) {
         const auto& nodes = file.model.nodes;
         if (index < 0 || size_t(index) >= nodes.size())
             fail(file.name + ": " + from + ": node " + std::to_string(index) + " out of range (" + std::to_string(nodes.size()) + " nodes)");
@@ -148,11 +150,14 @@ struct Traversal {
         for (int c = 0; c < 4; ++c)
             for (int r = 0; r < 4; ++r)
                 if (!std::isfinite(world[c][r])) fail(file.name + ": " + label + ": world transform is not finite");
+        tree.parent[size_t(index)] = parentNode;
+        tree.world[size_t(index)] = world;
+        tree.order.push_back(index);
         if (node.camera >= 0) addCamera(index, world);
         int reflector = -1;
         if (reflectorsFromExtras) reflector = addReflector(index, world);
         if (node.mesh >= 0) addDraws(index, world, reflector);
-        for (int child : node.children) visit(child, world, depth + 1, label + " children");
+        for (int child : node.children) visit(child, index, world, depth + 1, label + " children");
         state[size_t(index)] = 2;
     }
 
@@ -209,6 +214,7 @@ struct Traversal {
             draw.nodeName = node.name;
             draw.reflector = reflector;
             scene.draws.push_back(std::move(draw));
+            tree.drawNode.push_back(index);
         }
     }
 };
@@ -267,7 +273,8 @@ Scene loadGltf(const std::string& path, const LoadOptions& options) {
     else fromExtras = true;
 
     Traversal walk{file, scene, fromExtras};
-    for (int root : rootNodes(file)) walk.visit(root, glm::mat4(1.0f), 0, "scene nodes");
+    for (int root : rootNodes(file)) walk.visit(root, -1, glm::mat4(1.0f), 0, "scene nodes");
+    loadAnimations(file, walk.tree, scene);  // draws keep their rest pose; the animation only adds to it
 
     bindDrawsToReflectors(scene);
     computeBounds(scene);

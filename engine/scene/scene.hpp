@@ -1,6 +1,7 @@
 #pragma once
 // CPU-side scene: what the glTF loader produces and the renderer uploads. Flattened: every mesh
 // primitive instance becomes a DrawItem with its world matrix already resolved from the node hierarchy.
+#include "scene/animation.hpp"
 #include "scene/camera.hpp"
 #include "scene/reflector.hpp"
 
@@ -81,7 +82,8 @@ struct Scene {
     std::vector<DrawItem> draws;
     std::vector<NamedCamera> cameras;
     std::vector<Reflector> reflectors;
-    glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // world space, all draws
+    SceneAnimation animation;                    // the draws that move; DrawItem::world is their rest pose
+    glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // world space, all draws (at rest)
 
     const NamedCamera* findCamera(const std::string& name) const;
 };

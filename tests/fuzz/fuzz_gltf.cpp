@@ -19,6 +19,7 @@
 #include <fstream>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
 
@@ -61,6 +62,30 @@ const std::string& inputPath() {
 
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
+// What the renderer relies on when it poses an animated scene's moving draws each frame: every
+// reference in range, parents before children, and evaluate() safe at any time.
+void checkAnimation(const scene::Scene& s) {
+    const scene::SceneAnimation& a = s.animation;
+    fuzz::check(a.drawNode.size() == a.draws.size(), "animation: drawNode and draws differ in length");
+    for (size_t i = 0; i < a.draws.size(); ++i) {
+        fuzz::check(a.draws[i] < s.draws.size() && (i == 0 || a.draws[i] > a.draws[i - 1]), "animation: draws out of range or order");
+        fuzz::check(a.drawNode[i] < a.nodes.size(), "animation: draw node out of range");
+    }
+    for (size_t n = 0; n < a.nodes.size(); ++n) fuzz::check(a.nodes[n].parent < int(n), "animation: node after its child");
+    for (const scene::AnimationChannel& c : a.channels) {
+        fuzz::check(c.node < a.nodes.size() && !c.times.empty(), "animation: channel node out of range or no keys");
+        const size_t perKey = c.interpolation == scene::AnimationChannel::Interpolation::CubicSpline ? 3 : 1;
+        fuzz::check(c.values.size() == c.times.size() * perKey, "animation: channel values do not match its keys");
+        for (size_t k = 1; k < c.times.size(); ++k) fuzz::check(c.times[k] > c.times[k - 1], "animation: key times not increasing");
+    }
+    fuzz::check(std::isfinite(a.duration) && a.duration >= 0.0f, "animation: bad duration");
+    std::vector<glm::mat4> worlds;
+    for (double t : {0.0, 0.5 * a.duration, double(a.duration), 1e9, -3.0}) {
+        a.evaluate(t, worlds);
+        fuzz::check(worlds.size() == a.draws.size(), "animation: evaluate() gave the wrong number of matrices");
+    }
+}
+
 // What the renderer relies on when it uploads a loaded scene.
 void checkScene(const scene::Scene& s) {
     for (const scene::Mesh& m : s.meshes) {
@@ -95,6 +120,7 @@ void checkScene(const scene::Scene& s) {
                         c.pose.fovYDeg > 1.0f && c.pose.fovYDeg < 179.0f,
                     "camera '" + c.name + "': bad pose");
     fuzz::check(finite(s.boundsMin) && finite(s.boundsMax), "scene bounds not finite");
+    checkAnimation(s);
 }
 
 }  // namespace
