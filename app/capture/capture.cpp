@@ -2,6 +2,7 @@
 
 #include "capture/report.hpp"
 #include "render/headless_session.hpp"
+#include "scene/camera_path.hpp"
 #include "util/output_files.hpp"
 
 #include <algorithm>
@@ -21,6 +22,7 @@ CaptureResult capturePath(HeadlessSession& s, const ResolvedCamera& cam, const s
     csv << "frame,x,y,z,yaw_deg,pitch_deg,frame_gpu_ms\n";
     CaptureResult r;
     for (size_t i = 0; i < poses.size(); ++i) {
+        s.headless->setSceneTime(scene::cameraPathSceneTime(s.options.path, uint32_t(i)));
         r = s.headless->capture(poses[i], s.extent, 1, false, false, i == 0);
         char name[32];
         std::snprintf(name, sizeof name, "frame_%03zu.png", i);

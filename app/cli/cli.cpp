@@ -112,7 +112,8 @@ std::string usage() {
            " (default planar)\n"
            "  --set key=value      repeatable; keys (declared once: app/settings/settings.cpp):\n" + settingsUsage() +
            "  --path P             capture, compare: render a camera path from the camera, one frame per pose, each frame\n"
-           "                       read back: still | strafe | dolly | orbit (--frames poses, default " + std::to_string(kDefaultPathFrames) + ") or a FILE with\n"
+           "                       read back: still | animate (still camera, the scene's animation playing) | strafe | dolly |\n"
+           "                       orbit (--frames poses, default " + std::to_string(kDefaultPathFrames) + ") or a FILE with\n"
            "                       one x,y,z,yawDeg,pitchDeg[,fovYDeg] per line; compare scores every frame against the\n"
            "                       reference supersampled 16 times (metrics.json \"temporal\"; docs/temporal.md)\n"
            "  --frames N           frames to render (capture default 5: median GPU times over them; bench default 10)\n"
@@ -149,7 +150,7 @@ static Options parseArguments(int argc, const char* const* argv) {
         else if (a == "--camera") o.camera = value(a);
         else if (a == "--path") {
             o.path = value(a);
-            if (o.path.empty()) throw std::runtime_error("--path: expected still, strafe, dolly, orbit or a file");
+            if (o.path.empty()) throw std::runtime_error("--path: expected still, animate, strafe, dolly, orbit or a file");
         }
         else if (a == "--out") {
             o.out = value(a);

@@ -17,7 +17,7 @@ struct Options {
     std::string scene;       // empty = built-in default scene
     std::string reflectors;  // empty = scene sidecar / glTF extras
     std::string camera;      // empty = every named camera (capture) / the first (view)
-    std::string path;        // --path still|strafe|dolly|orbit|FILE (capture, compare); empty = no path
+    std::string path;        // --path still|animate|strafe|dolly|orbit|FILE (capture, compare); empty = no path
     uint32_t width = 1280, height = 720;
     std::string technique = "ppr";        // capture / view: the last --technique given
     std::vector<std::string> techniques;  // compare: every --technique given, in order (default: ppr)

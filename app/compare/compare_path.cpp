@@ -53,7 +53,8 @@ int runComparePath(const Options& o) {
         const std::filesystem::path dir = session.cameraDir(cam.name);
         const uint32_t errorsBefore = ctx.validationErrors();
         const std::vector<scene::CameraPose> poses = session.path(cam);
-        const bool still = scene::isStill(poses);
+        // A still camera on a moving scene is not still: its frame-to-frame change is the motion.
+        const bool still = scene::isStill(poses) && !scene::cameraPathSceneTime(o.path, 1);
 
         std::vector<ReferenceFrame> reference(poses.size());
         {
@@ -61,6 +62,7 @@ int runComparePath(const Options& o) {
             headless.setTechnique(o.reference);
             headless.settings().set("taa", "0");
             for (size_t i = 0; i < poses.size(); ++i) {
+                headless.setSceneTime(scene::cameraPathSceneTime(o.path, uint32_t(i)));
                 reference[i].supersampled = headless.captureSupersampled(poses[i], extent, scene::kJitterLength);
                 reference[i].reflectorPixels = allReflectorPixels(headless.capture(poses[i], extent, 1, false, true).reflection);
             }
@@ -96,6 +98,7 @@ int runComparePath(const Options& o) {
             util::Rgba8Image previous;
             PlotSeries wholeSeries{t, {}, {}}, reflectorSeries{t, {}, {}};
             for (size_t i = 0; i < poses.size(); ++i) {
+                headless.setSceneTime(scene::cameraPathSceneTime(o.path, uint32_t(i)));
                 const CaptureResult r = headless.capture(poses[i], extent, 1, false, false, i == 0);
                 TemporalFrame f;
                 f.psnrDb = imagePsnrDb(r.image, reference[i].supersampled);

@@ -71,6 +71,8 @@ passes::FrameInputs FrameConstantsBuffer::inputs(const ReflectorSet& reflectors,
     in.clear = &clear_;
     in.computeClear = computeClear_;
     in.scene = &scene_;
+    in.draws = scene_.drawBuffer(slot_);
+    in.motion = scene_.motionBuffer(slot_);
     in.extent = extent_;
     in.drawReflectors = reflectors.surfaces().drawReflectors(slot_);
     in.reflectors = reflectors.buffer().reflectors(slot_);

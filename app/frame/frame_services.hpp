@@ -55,6 +55,7 @@ struct FrameServices {
     const passes::HizPass& hiz;
     const passes::GlassReflectPass& glassReflect;  // PPR's glass resolve; the trunk's atlas debug view
     EnvironmentProbe& environment;                 // --set fallback_env / env_source
+    uint32_t framesInFlight;                       // per-slot resources a module keeps (the animated TLAS's instances)
 };
 
 // One technique's view of the frame being recorded.

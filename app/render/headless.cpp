@@ -160,6 +160,7 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
         req.target = &targetImport_;
         req.cameraCut = newShot && f == 0;  // TAA starts from this camera's own frames
         req.jitter = jitter_;
+        req.sceneTime = sceneTime_;
         const bool last = f + 1 == frames;
         abTaps_.attach(req.taps, ab_, abSplit_);
         if (last) req.taps.push_back(readbackTap(ReadbackSource::Final, &readbackImport_));

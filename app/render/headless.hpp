@@ -68,6 +68,9 @@ public:
     // A table row with its own settings ("ppr@normalmap=off"): sets the technique, applies the
     // settings over the current ones and returns those, for the caller to restore after its captures.
     Settings setVariant(const std::string& variant);
+    // The scene time of the following captures (animated scenes): seconds on the animation's clock;
+    // none (the default) renders the pose as loaded.
+    void setSceneTime(std::optional<double> seconds) { sceneTime_ = seconds; }
     // The reference A/B compares with (default planar).
     void setReference(const std::string& reference) { reference_ = reference; }
     // The viewer's A/B view for the following captures (tests).
@@ -106,6 +109,7 @@ private:
     AbView ab_ = AbView::Off;
     float abSplit_ = 0.5f;
     std::optional<glm::vec2> jitter_;  // captureSupersampled's current sample
+    std::optional<double> sceneTime_;
     void ensureGlassReadback(uint32_t atlasSize);
 };
 

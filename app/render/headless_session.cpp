@@ -17,7 +17,7 @@ HeadlessSession::HeadlessSession(const Options& o) : options(o) {
     cameras = resolveCameras(scene, o.camera);
     if (!o.path.empty() && !scene::isNamedCameraPath(o.path)) {
         std::ifstream in(o.path, std::ios::binary);
-        if (!in) throw std::runtime_error("--path " + o.path + ": cannot read the file (or a path name: still, strafe, dolly, orbit)");
+        if (!in) throw std::runtime_error("--path " + o.path + ": cannot read the file (or a path name: still, animate, strafe, dolly, orbit)");
         std::ostringstream text;
         text << in.rdbuf();
         pathFile = scene::parseCameraPath(text.str(), o.path);

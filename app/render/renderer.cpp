@@ -40,7 +40,7 @@ glm::mat4 lightViewProjection(const scene::Scene& s, const glm::vec3& lightDir) 
 
 Renderer::Renderer(const vk::Context& ctx, const scene::Scene& scene) : ctx_(ctx), scene_(scene) {
     samplers_.create(ctx);
-    gpuScene_ = std::make_unique<gpu::GpuScene>(ctx, scene, samplers_.linearRepeatAniso);
+    gpuScene_ = std::make_unique<gpu::GpuScene>(ctx, scene, samplers_.linearRepeatAniso, kFramesInFlight);
     shadow_ = std::make_unique<passes::ShadowPass>(ctx, *gpuScene_);
     gbuffer_ = std::make_unique<passes::GBufferPass>(ctx, *gpuScene_);
     lighting_ = std::make_unique<passes::LightingPass>(ctx);
@@ -59,7 +59,7 @@ Renderer::Renderer(const vk::Context& ctx, const scene::Scene& scene) : ctx_(ctx
     stats_ = std::make_unique<FrameStatsBuffers>(ctx, kFramesInFlight);
     environment_ = std::make_unique<EnvironmentProbe>(ctx, *gpuScene_, *shadow_, *gbuffer_, *lighting_);
     services_.reset(new FrameServices{ctx, *gpuScene_, *gbuffer_, *lighting_, *reflectors_, *constants_, *glass_, *stats_, *tileClassify_,
-                                      *hiz_, *glassReflect_, *environment_});
+                                      *hiz_, *glassReflect_, *environment_, kFramesInFlight});
     for (const TechniqueDesc& t : techniqueTable()) modules_.push_back(t.make ? t.make(*services_) : nullptr);
     executor_ = std::make_unique<graph::GraphExecutor>(ctx, kFramesInFlight);
     setReflectors(scene.reflectors);
@@ -143,6 +143,7 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
     stats_->beginFrame(slot);
     glass_->beginFrame(slot);
     reflectors_->update(slot);
+    gpuScene_->pose(slot, req.sceneTime, req.cameraCut);
     constants_->beginFrame(slot, req.camera, req.extent, settings.view, lightViewProjection(scene_, glm::normalize(glm::vec3(-0.45f, -0.8f, -0.4f))),
                            jitter);
     const passes::FrameInputs in = constants_->inputs(*reflectors_);
@@ -181,7 +182,7 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
         hdr = glassForward_->add(g, in, hdr, gb.depth, frame.reflectorData(), glassReflection, &glassOrder_);
         if (glass && settings.view.debug == gpu::kDebugAtlas) hdr = glassReflect_->addAtlasView(g, in, glass->atlas, hdr);
     }
-    if (taa) hdr = taa_->add(g, in, executor_->history(), hdr, gb.depth);
+    if (taa) hdr = taa_->add(g, in, executor_->history(), hdr, gb.depth, gb.material);
     board.put(HdrColor{hdr});
     runTaps(req, TapPoint::AfterGlass, taps);
 

@@ -34,6 +34,9 @@ struct FrameRequest {
     // offset in pixels whatever taa says (the supersampled reference's samples).
     bool cameraCut = false;
     std::optional<glm::vec2> jitter;
+    // Animated scenes: the time on the animation's clock, in seconds; none = the pose as loaded (every
+    // capture of a named camera, so a still image never depends on when it was taken).
+    std::optional<double> sceneTime;
 };
 
 struct FrameRecord {

@@ -154,7 +154,7 @@ const std::vector<SettingDecl>& settingDecls() {
                 "texels per side of the glass atlas (PPR's intermediate buffer for glass panels)"),
         toggle("taa", "taa", [](FrameSettings& s) -> bool& { return s.taa.enabled; }, false,
                "temporal anti-aliasing: Halton (2, 3) jitter of 16 samples, history reprojected by depth and the previous "
-               "view-projection, YCoCg variance clipping, Catmull-Rom history sample (0: off, bit-identical frames)"),
+               "view-projection (and a moving object's own motion), YCoCg variance clipping, Catmull-Rom history sample (0: off, bit-identical frames)"),
         choice<Reproject>("reproject", "taa", [](FrameSettings& s) -> Reproject& { return s.taa.reproject; }, {"surface", "candidates", "virtual"},
                           "virtual",
                           "taa=1: the reflection's own history, fetched by the surface's motion (a plain TAA), the smallest of the "

@@ -5,12 +5,22 @@ namespace ppr::app {
 bool RaytracedTechnique::prepare() {
     if (!services_.ctx.rayQuery().available) return false;
     if (!pass_) pass_ = std::make_unique<passes::RaytracePass>(services_.ctx, services_.scene);
-    if (!structures_) structures_ = std::make_unique<gpu::SceneAccelerationStructures>(services_.ctx, services_.scene);
+    if (!structures_) structures_ = std::make_unique<gpu::SceneAccelerationStructures>(services_.ctx, services_.scene, services_.framesInFlight);
     return true;
 }
 
-passes::RaytraceInputs RaytracedTechnique::inputs(const TechniqueFrame& f) const {
+namespace {
+struct TlasRebuilt {  // on the frame's blackboard: the reference and the technique share one rebuild
+    graph::BufferHandle storage;
+};
+}  // namespace
+
+passes::RaytraceInputs RaytracedTechnique::inputs(TechniqueFrame& f) const {
     passes::RaytraceInputs rt;
+    if (structures_->rebuildsPerFrame()) {
+        if (!f.board.find<TlasRebuilt>()) f.board.put(TlasRebuilt{pass_->addTlasRebuild(f.graph, *structures_, services_.scene, f.slot)});
+        rt.tlasBuilt = f.board.get<TlasRebuilt>().storage;
+    }
     rt.depth = f.gbuffer.depth;
     rt.shadowMap = f.shadowMap;
     rt.reflectors = f.reflectorData();

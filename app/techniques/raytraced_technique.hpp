@@ -27,7 +27,8 @@ private:
     // records a frame (once per renderer, i.e. per scene load; other techniques never pay for them).
     // False on a device without ray queries.
     bool prepare();
-    passes::RaytraceInputs inputs(const TechniqueFrame& f) const;
+    // Animated scenes: the first call in a frame adds the TLAS rebuild.
+    passes::RaytraceInputs inputs(TechniqueFrame& f) const;
 
     FrameServices& services_;
     std::unique_ptr<passes::RaytracePass> pass_;

@@ -191,6 +191,9 @@ private:
     std::string cameraName_;
     int cameraIndex_ = -1;
     bool cameraCut_ = false;  // the next frame starts a new shot (a jump to a named camera)
+    // An animated scene plays in real time unless paused in the panel; a still one has no clock.
+    bool animate_ = true;
+    double sceneClock_ = 0.0;  // seconds on the animation's clock
     bool vsync_ = true;
     bool swapchainDirty_ = false;
     bool looking_ = false;
@@ -362,6 +365,10 @@ void Viewer::buildUi() {
     m.cameraIndex = cameraIndex_;
     m.cameraSpeed = camera_.speed;
     m.vsync = vsync_;
+    if (!scene_.animation.empty()) {
+        m.animate = &animate_;
+        m.sceneSeconds = sceneClock_;
+    }
     m.settings = &settings_;
     m.technique = technique_;
     m.warning = warning_;
@@ -447,6 +454,7 @@ bool Viewer::renderFrame(uint32_t slot) {
     req.reference = reference_;
     req.settings = settings_.values();
     req.cameraCut = std::exchange(cameraCut_, false);
+    if (!scene_.animation.empty()) req.sceneTime = sceneClock_;
     if (pendingClick_) {  // the G-buffer under the click, read back once this slot's fence signals
         req.taps.push_back(pickTap_->tap(pickPixel_, &pickImport_[slot]));
         pickIssued_[slot] = true;
@@ -487,6 +495,7 @@ void Viewer::saveCapture() {
         if (!headless_) headless_ = std::make_unique<HeadlessRenderer>(ctx_, *renderer_);
         headless_->setTechnique(technique_);
         headless_->settings() = settings_;
+        if (!scene_.animation.empty()) headless_->setSceneTime(sceneClock_);  // what the window shows
         const VkExtent2D extent = swapchain_->extent();
         const uint32_t errorsBefore = ctx_.validationErrors();
         CaptureResult r = headless_->capture(camera_.pose, extent, 3);
@@ -571,6 +580,7 @@ void Viewer::run(uint64_t maxFrames, uint64_t captureAt) {
             if (!imgui_->wantsTextInput()) captureRequested_ = true;
         }
         updateCamera(static_cast<float>(dtMs * 1e-3));
+        if (animate_) sceneClock_ += dtMs * 1e-3;
         buildUi();
         if (swapchainDirty_) continue;  // vsync toggled: recreate before rendering
         const bool presented = renderFrame(slot);

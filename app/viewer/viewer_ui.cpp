@@ -272,6 +272,11 @@ PanelActions drawPanel(PanelModel& m) {
         }
         ImGui::Text("camera speed %.2f m/s", m.cameraSpeed);
         if (ImGui::Checkbox("vsync", &m.vsync)) a.vsyncChanged = true;
+        if (m.animate) {
+            ImGui::Checkbox("animate", m.animate);
+            ImGui::SameLine();
+            ImGui::Text("scene %.2f s", m.sceneSeconds);
+        }
     }
 
     if (ImGui::CollapsingHeader("Technique", ImGuiTreeNodeFlags_DefaultOpen)) {

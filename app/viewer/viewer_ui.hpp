@@ -79,6 +79,8 @@ struct PanelModel {
     int cameraIndex = -1;  // -1: free camera
     float cameraSpeed = 0.0f;
     bool vsync = true;
+    bool* animate = nullptr;    // an animated scene: play (true) or hold its pose; null for a still scene
+    double sceneSeconds = 0.0;  // its clock
     Settings* settings = nullptr;
     std::string technique;  // current; a change comes back in PanelActions::technique
     std::string warning;    // the renderer's, shown in the panel

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -58,7 +59,8 @@ void SceneAccelerationStructures::destroy(Structure& s) {
     s = {};
 }
 
-SceneAccelerationStructures::SceneAccelerationStructures(const vk::Context& ctx, const GpuScene& gpuScene) : ctx_(ctx) {
+SceneAccelerationStructures::SceneAccelerationStructures(const vk::Context& ctx, const GpuScene& gpuScene, uint32_t framesInFlight)
+    : ctx_(ctx) {
     const vk::RayQuerySupport& rq = ctx.rayQuery();
     if (!rq.available) throw std::logic_error("acceleration structures: " + ctx.rayQueryUnavailableReason());
     const auto start = std::chrono::steady_clock::now();
@@ -115,6 +117,7 @@ SceneAccelerationStructures::SceneAccelerationStructures(const vk::Context& ctx,
 
     // The TLAS: one instance per opaque draw.
     std::vector<VkAccelerationStructureInstanceKHR> instances;
+    std::vector<uint32_t> instanceDraws;
     for (uint32_t d = 0; d < scene.draws.size(); ++d) {
         const auto blas = blasOfMesh.find(scene.draws[d].mesh);
         if (gpuScene.transparent(d) || blas == blasOfMesh.end()) continue;
@@ -129,6 +132,7 @@ SceneAccelerationStructures::SceneAccelerationStructures(const vk::Context& ctx,
         inst.flags = VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR;  // two-sided, as the G-buffer draws it
         inst.accelerationStructureReference = blas_[blas->second].address;
         instances.push_back(inst);
+        instanceDraws.push_back(d);
     }
     vk::Buffer instanceBuffer = uploadBuffer(ctx, instances.data(), instances.size() * sizeof(VkAccelerationStructureInstanceKHR),
                                              VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
@@ -177,13 +181,75 @@ SceneAccelerationStructures::SceneAccelerationStructures(const vk::Context& ctx,
     });
     vk::destroyBuffer(ctx, scratch);
     vk::destroyBuffer(ctx, instanceBuffer);
+    if (gpuScene.animated()) {
+        instances_ = std::move(instances);
+        createRebuildResources(gpuScene, instanceDraws, tlasSizes.buildScratchSize, framesInFlight);
+    }
     stats_.bottomLevel = static_cast<uint32_t>(blas_.size());
-    stats_.instances = static_cast<uint32_t>(instances.size());
+    stats_.instances = static_cast<uint32_t>(instanceDraws.size());
     stats_.buildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+void SceneAccelerationStructures::createRebuildResources(const GpuScene& gpuScene, const std::vector<uint32_t>& instanceDraws,
+                                                         VkDeviceSize scratchBytes, uint32_t framesInFlight) {
+    const vk::RayQuerySupport& rq = ctx_.rayQuery();
+    const scene::SceneAnimation& animation = gpuScene.cpu().animation;
+    for (uint32_t draw : animation.draws) {
+        const auto it = std::lower_bound(instanceDraws.begin(), instanceDraws.end(), draw);
+        movingInstance_.push_back(it != instanceDraws.end() && *it == draw ? int(it - instanceDraws.begin()) : -1);
+    }
+    const VkDeviceSize bytes = std::max<VkDeviceSize>(instances_.size() * sizeof(VkAccelerationStructureInstanceKHR), 16);
+    for (uint32_t s = 0; s < framesInFlight; ++s) {
+        vk::Buffer b = vk::createBuffer(ctx_, bytes,
+                                        VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+                                        vk::MemoryUse::Upload, "tlas instances (moving)");
+        std::memcpy(b.mapped, instances_.data(), instances_.size() * sizeof(VkAccelerationStructureInstanceKHR));
+        vmaFlushAllocation(ctx_.allocator(), b.allocation, 0, VK_WHOLE_SIZE);
+        slots_.push_back(b);
+    }
+    rebuildScratch_ = vk::createBuffer(ctx_, std::max<VkDeviceSize>(scratchBytes + rq.scratchAlignment, 16),
+                                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT, vk::MemoryUse::GpuOnly,
+                                       "tlas rebuild scratch");
+}
+
+void SceneAccelerationStructures::prepareRebuild(uint32_t slot, const GpuScene& gpuScene) {
+    const SceneMotion* motion = gpuScene.motion();
+    if (!motion || slot >= slots_.size()) return;
+    auto* out = static_cast<VkAccelerationStructureInstanceKHR*>(slots_[slot].mapped);
+    const std::vector<glm::mat4>& worlds = motion->worlds();
+    for (size_t i = 0; i < movingInstance_.size() && i < worlds.size(); ++i) {
+        if (movingInstance_[i] < 0) continue;
+        VkTransformMatrixKHR& t = out[movingInstance_[i]].transform;
+        for (int row = 0; row < 3; ++row)
+            for (int col = 0; col < 4; ++col) t.matrix[row][col] = worlds[i][col][row];
+    }
+    vmaFlushAllocation(ctx_.allocator(), slots_[slot].allocation, 0, VK_WHOLE_SIZE);
+}
+
+void SceneAccelerationStructures::recordRebuild(VkCommandBuffer cmd, uint32_t slot) const {
+    const vk::RayQuerySupport& rq = ctx_.rayQuery();
+    VkAccelerationStructureGeometryKHR geometry{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
+    geometry.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
+    geometry.geometry.instances = {VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR};
+    geometry.geometry.instances.data.deviceAddress = bufferAddress(ctx_, slots_[slot].buffer);
+    VkAccelerationStructureBuildGeometryInfoKHR info{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR};
+    info.type = VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR;
+    info.flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR;
+    info.mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;  // a full build each frame: no update bookkeeping, no quality drift
+    info.geometryCount = 1;
+    info.pGeometries = &geometry;
+    info.dstAccelerationStructure = tlas_.handle;
+    info.scratchData.deviceAddress = alignUp(bufferAddress(ctx_, rebuildScratch_.buffer), rq.scratchAlignment);
+    VkAccelerationStructureBuildRangeInfoKHR range{};
+    range.primitiveCount = static_cast<uint32_t>(instances_.size());
+    const VkAccelerationStructureBuildRangeInfoKHR* ranges = &range;
+    rq.cmdBuild(cmd, 1, &info, &ranges);
 }
 
 SceneAccelerationStructures::~SceneAccelerationStructures() {
     vkDeviceWaitIdle(ctx_.device());
+    for (vk::Buffer& b : slots_) vk::destroyBuffer(ctx_, b);
+    vk::destroyBuffer(ctx_, rebuildScratch_);
     destroy(tlas_);
     for (Structure& s : blas_) destroy(s);
 }

@@ -55,7 +55,8 @@ bool GpuScene::masked(uint32_t draw) const {
     return m >= 0 && size_t(m) < scene_.materials.size() && scene_.materials[size_t(m)].masked;
 }
 
-GpuScene::GpuScene(const vk::Context& ctx, const scene::Scene& scene, VkSampler materialSampler) : ctx_(ctx), scene_(scene) {
+GpuScene::GpuScene(const vk::Context& ctx, const scene::Scene& scene, VkSampler materialSampler, uint32_t framesInFlight)
+    : ctx_(ctx), scene_(scene) {
     // Storage: ray-query hits read their triangle's vertices. With ray queries, also the input of the
     // acceleration-structure builds (gpu/acceleration_structures.hpp), which take device addresses.
     VkBufferUsageFlags geometryUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
@@ -81,7 +82,12 @@ GpuScene::GpuScene(const vk::Context& ctx, const scene::Scene& scene, VkSampler 
             transparentDraws_.push_back(static_cast<uint32_t>(draws.size()));
         draws.push_back(g);
     }
-    draws_ = uploadBuffer(ctx, draws.data(), draws.size() * sizeof(DrawData), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "scene draws");
+    const scene::SceneAnimation& animation = scene.animation;
+    for (size_t i = 0; i < animation.draws.size(); ++i) draws[animation.draws[i]].motionSlot = SceneMotion::slotOf(i);
+    if (animation.empty()) draws_ = uploadBuffer(ctx, draws.data(), draws.size() * sizeof(DrawData), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "scene draws");
+    else motion_ = std::make_unique<SceneMotion>(ctx, scene, draws, framesInFlight);
+    const MotionData identity{glm::mat4(1.0f)};
+    stillMotion_ = uploadBuffer(ctx, &identity, sizeof identity, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "scene motion (still)");
 
     auto tex = [](int i) { return i >= 0 ? static_cast<uint32_t>(i) : kNoTexture; };
     std::vector<MaterialData> materials;
@@ -216,7 +222,8 @@ void GpuScene::uploadTextures(VkSampler sampler) {
 GpuScene::~GpuScene() {
     vkDeviceWaitIdle(ctx_.device());
     for (vk::Image& t : textures_) vk::destroyImage(ctx_, t);
-    for (vk::Buffer* b : {&vertices_, &indices_, &draws_, &materials_}) vk::destroyBuffer(ctx_, *b);
+    motion_.reset();
+    for (vk::Buffer* b : {&vertices_, &indices_, &draws_, &materials_, &stillMotion_}) vk::destroyBuffer(ctx_, *b);
     if (pool_) vkDestroyDescriptorPool(ctx_.device(), pool_, nullptr), --vk::liveObjects().descriptorPools;
     if (textureLayout_) vkDestroyDescriptorSetLayout(ctx_.device(), textureLayout_, nullptr), --vk::liveObjects().descriptorSetLayouts;
 }

@@ -1,23 +1,36 @@
 #pragma once
 // The scene on the GPU: vertex/index buffers, per-draw and per-material records, material textures
-// (mipmapped, in one bindless descriptor set), all uploaded once at load time — nothing per frame.
+// (mipmapped, in one bindless descriptor set), all uploaded once at load time. An animated scene's
+// moving draws are the exception: gpu/scene_motion.hpp rewrites their records per frame.
+#include "gpu/scene_motion.hpp"
 #include "scene/scene.hpp"
 #include "vk/context.hpp"
 
+#include <memory>
+#include <optional>
 #include <vector>
 
 namespace ppr::gpu {
 
 class GpuScene {
 public:
-    GpuScene(const vk::Context& ctx, const scene::Scene& scene, VkSampler materialSampler);
+    GpuScene(const vk::Context& ctx, const scene::Scene& scene, VkSampler materialSampler, uint32_t framesInFlight = 1);
     ~GpuScene();
     GpuScene(const GpuScene&) = delete;
     GpuScene& operator=(const GpuScene&) = delete;
 
     VkBuffer vertexBuffer() const { return vertices_.buffer; }
     VkBuffer indexBuffer() const { return indices_.buffer; }
-    VkBuffer drawBuffer() const { return draws_.buffer; }
+    // The draw records (DrawData) and per-object motion table (MotionData) frame `slot` reads: one
+    // GPU-only copy for a still scene, one host-visible copy per frame in flight for an animated one.
+    VkBuffer drawBuffer(uint32_t slot) const { return motion_ ? motion_->draws(slot) : draws_.buffer; }
+    VkBuffer motionBuffer(uint32_t slot) const { return motion_ ? motion_->motion(slot) : stillMotion_.buffer; }
+    bool animated() const { return motion_ != nullptr; }
+    // Poses the moving draws for frame `slot` (SceneMotion::pose); nothing for a still scene.
+    void pose(uint32_t slot, std::optional<double> seconds, bool cut) {
+        if (motion_) motion_->pose(slot, seconds, cut);
+    }
+    const SceneMotion* motion() const { return motion_.get(); }
     VkBuffer materialBuffer() const { return materials_.buffer; }
     VkDescriptorSetLayout textureSetLayout() const { return textureLayout_; }
     VkDescriptorSet textureSet() const { return textureSet_; }
@@ -64,7 +77,8 @@ private:
     void uploadTextures(VkSampler sampler);
     const vk::Context& ctx_;
     const scene::Scene& scene_;
-    vk::Buffer vertices_, indices_, draws_, materials_;
+    vk::Buffer vertices_, indices_, draws_, materials_, stillMotion_;
+    std::unique_ptr<SceneMotion> motion_;
     std::vector<vk::Image> textures_;
     VkDescriptorSetLayout textureLayout_ = VK_NULL_HANDLE;
     VkDescriptorPool pool_ = VK_NULL_HANDLE;

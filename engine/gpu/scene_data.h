@@ -12,7 +12,7 @@ struct DrawData {
     uint firstIndex;    // the mesh's triangles in the scene index buffer (ray-query hits fetch their vertices)
     int vertexOffset;   // added to each index, as vkCmdDrawIndexed does
     uint flags;         // kDrawVertexColors
-    uint pad0;
+    uint motionSlot;    // moving draws: 1..kMaxMovingDraws, its MotionData entry; 0 = still
     uint pad1;
     uint pad2;
 };
@@ -74,6 +74,16 @@ PPR_BEGIN
 // A vertex's COLOR_0 (VertexData::color).
 PPR_INLINE vec4 vertexColor(uvec2 packed) { return vec4(unpackUnorm2x16(packed.x), unpackUnorm2x16(packed.y)); }
 PPR_END
+// Per-object motion for TAA. The G-buffer writes a draw's motionSlot / 255 into the material
+// target's alpha (RGBA8); TAA carries that pixel's world position through the slot's matrix before
+// projecting it with last frame's view-projection. Slot 0, every still draw, is the identity.
+PPR_CONST(uint, kMaxMovingDraws, 255u)
+PPR_BEGIN
+struct MotionData {
+    mat4 toPrevious;  // world position now → where that point of the draw was last frame
+};
+PPR_END
+PPR_SIZE_CHECK(MotionData, 64);
 PPR_CONST(uint, kMaterialReflective, 1u)
 PPR_CONST(uint, kMaterialTransparent, 2u)  // glTF alphaMode BLEND: the glass forward pass draws it
 PPR_CONST(uint, kMaterialMasked, 4u)       // glTF alphaMode MASK: G-buffer and shadow map cut it out

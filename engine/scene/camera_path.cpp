@@ -8,7 +8,7 @@
 namespace ppr::scene {
 
 const std::vector<std::string>& namedCameraPaths() {
-    static const std::vector<std::string> names = {"still", "strafe", "dolly", "orbit"};
+    static const std::vector<std::string> names = {"still", "animate", "strafe", "dolly", "orbit"};
     return names;
 }
 
@@ -18,7 +18,7 @@ bool isNamedCameraPath(const std::string& name) {
 }
 
 std::vector<CameraPose> namedCameraPath(const std::string& name, const CameraPose& start, uint32_t frames) {
-    if (!isNamedCameraPath(name)) throw std::runtime_error("--path " + name + ": expected still, strafe, dolly, orbit or a file");
+    if (!isNamedCameraPath(name)) throw std::runtime_error("--path " + name + ": expected still, animate, strafe, dolly, orbit or a file");
     const glm::vec3 forward = viewDirection(start.yawDeg, start.pitchDeg);
     const float yaw = glm::radians(start.yawDeg);
     const glm::vec3 right{std::cos(yaw), 0.0f, std::sin(yaw)};  // as viewMatrix's
@@ -39,6 +39,11 @@ std::vector<CameraPose> namedCameraPath(const std::string& name, const CameraPos
         }
     }
     return poses;
+}
+
+std::optional<double> cameraPathSceneTime(const std::string& name, uint32_t frame) {
+    if (name != "animate") return std::nullopt;
+    return kFrameSeconds * frame;
 }
 
 std::vector<CameraPose> parseCameraPath(const std::string& text, const std::string& file) {

@@ -14,6 +14,9 @@ struct FrameInputs {
     VkDeviceSize frameConstantsSize = 0;
     const shader::Samplers* samplers = nullptr;
     const gpu::GpuScene* scene = nullptr;
+    // This frame's draw records (gpu::DrawData) and per-object motion (gpu::MotionData): an animated
+    // scene's change per frame in flight (gpu/scene_motion.hpp).
+    VkBuffer draws = VK_NULL_HANDLE, motion = VK_NULL_HANDLE;
     VkExtent2D extent{};
     // Surfaces → reflectors (common/surface_binding.hpp): per-draw ids, the reflectors (ReflectorData[])
     // and the loose ones the G-buffer tests per pixel.

@@ -4,8 +4,8 @@
 #include "common/brdf.glsl"
 #include "common/reflection.h"
 #include "common/reflector_data.h"
+#include "gpu/scene_data.h"
 #include "lighting/lighting.h"
-#include "taa/taa_motion.glsl"
 
 layout(local_size_x = kLightingGroupSize, local_size_y = kLightingGroupSize) in;
 layout(set = 0, binding = 1) uniform sampler2D sceneColor;
@@ -15,10 +15,13 @@ layout(set = 0, binding = 4) uniform sampler2D albedoTex;
 layout(set = 0, binding = 5) uniform sampler2D materialTex;
 layout(set = 0, binding = 6) uniform usampler2D reflectorTex;
 layout(set = 0, binding = 7, rgba16f) uniform writeonly image2D outColor;
+layout(set = 0, binding = 8, scalar) readonly buffer Motions { MotionData motions[]; };  // the motion debug view
 #ifdef PPR_COMPOSITE_REFLECTION
-layout(set = 0, binding = 8) uniform sampler2D reflectionTex;
-layout(set = 0, binding = 9, scalar) readonly buffer Reflectors { ReflectorData reflectors[]; };
+layout(set = 0, binding = 9) uniform sampler2D reflectionTex;
+layout(set = 0, binding = 10, scalar) readonly buffer Reflectors { ReflectorData reflectors[]; };
 #endif
+#include "taa/taa_motion.glsl"
+#include "taa/object_motion.glsl"
 
 vec3 idColor(uint id) {
     uint h = id * 2654435761u;
@@ -56,7 +59,7 @@ void main() {
     else if (view == kDebugMotion) {
         float prevW;
         vec2 uv = (vec2(pix) + 0.5) * frame.invScreenSize;
-        vec2 motion = (previousUv(uv, texelFetch(depthTex, pix, 0).r, prevW) - uv) * frame.screenSize;
+        vec2 motion = (previousUvMoving(uv, texelFetch(depthTex, pix, 0).r, motionSlotAt(pix), prevW) - uv) * frame.screenSize;
         // Black = still; the hue gives the direction, the brightness the length (full at the range).
         float len = length(motion);
         vec2 dir = len > 0.0 ? motion / len : vec2(0.0);

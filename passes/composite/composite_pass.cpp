@@ -26,7 +26,8 @@ graph::ImageHandle CompositePass::add(graph::RenderGraph& g, const FrameInputs& 
         .sampled(gb.albedo, s)
         .sampled(gb.material, s)
         .sampled(gb.reflector, s)
-        .storageWrite(g.createImage("composited", {in.extent.width, in.extent.height, LightingPass::kColorFormat, 1}), &out);
+        .storageWrite(g.createImage("composited", {in.extent.width, in.extent.height, LightingPass::kColorFormat, 1}), &out)
+        .hostStorage(in.motion);
     if (reflection) pass.sampled(reflection->image, s).hostStorage(reflection->reflectors);
     pass.dispatch(in.extent, gpu::kLightingGroupSize);
     return out;

@@ -56,7 +56,7 @@ void main() {
     outNormal = vec4(n, 1.0);
     outAlbedo = vec4(base.rgb, 1.0);
     outMaterial = vec4(clamp(m.roughness * mr.g, 0.02, 1.0), clamp(m.metallic * mr.b, 0.0, 1.0),
-                       (m.flags & kMaterialReflective) != 0u ? 1.0 : 0.0, 0.0);
+                       (m.flags & kMaterialReflective) != 0u ? 1.0 : 0.0, float(d.motionSlot) / float(kMaxMovingDraws));
     uint id = drawReflectors[vDraw];
     if (id == 0u && pc.looseCount > 0u) {
         // A reflector no mesh belongs to covers whatever surface lies on its rectangle.

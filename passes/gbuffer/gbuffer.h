@@ -5,7 +5,8 @@
 // Attachment locations:
 //   0 normal    RGBA16F   xyz = world-space shading normal (normal-mapped), w = 1 on geometry
 //   1 albedo    RGBA8 sRGB  rgb = base colour
-//   2 material  RGBA8     r = roughness, g = metallic, b = 1 if the material is reflective
+//   2 material  RGBA8     r = roughness, g = metallic, b = 1 if the material is reflective,
+//                         a = a moving draw's motion slot / 255 (gpu/scene_data.h MotionData; 0 = still)
 //   3 reflector R16_UINT  reflector index + 1 of the surface's reflector rectangle, 0 = none
 //   4 emissive  B10G11R11 UFLOAT  rgb = emitted radiance (glTF emissive × KHR_materials_emissive_strength)
 // Depth: D32, reverse-Z (1 = near, 0 = sky).

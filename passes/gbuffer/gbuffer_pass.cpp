@@ -59,7 +59,7 @@ GBuffer GBufferPass::add(graph::RenderGraph& g, const FrameInputs& in, const std
             pipeline_.bind(cmd);
             shader::PushDescriptors(ctx_)
                 .uniformBuffer(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
-                .storageBuffer(in.scene->drawBuffer())
+                .storageBuffer(in.draws)
                 .storageBuffer(in.scene->materialBuffer())
                 .storageBuffer(in.drawReflectors)
                 .storageBuffer(in.reflectors)

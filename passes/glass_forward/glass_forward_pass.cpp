@@ -65,7 +65,7 @@ graph::ImageHandle GlassForwardPass::add(graph::RenderGraph& g, const FrameInput
             pipeline.bind(cmd);
             shader::PushDescriptors push(ctx_);
             push.uniformBuffer(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
-                .storageBuffer(in.scene->drawBuffer())
+                .storageBuffer(in.draws)
                 .storageBuffer(in.scene->materialBuffer())
                 .storageBuffer(reflectors)
                 .storageBuffer(in.drawReflectors)

@@ -20,7 +20,7 @@ shader::PushDescriptors& commonWrites(shader::PushDescriptors& w, const FrameInp
         .storageBuffer(in.looseReflectors)
         .storageBuffer(scene.vertexBuffer())
         .storageBuffer(scene.indexBuffer())
-        .storageBuffer(scene.drawBuffer())
+        .storageBuffer(in.draws)
         .storageBuffer(scene.materialBuffer())
         .accelerationStructure(rt.tlas);
 }
@@ -57,6 +57,7 @@ graph::ImageHandle RaytracePass::addScreen(graph::RenderGraph& g, const FrameInp
             data.normal = b.sampled(gb.normal);
             data.reflector = b.sampled(gb.reflector);
             data.out = b.storageWrite(target);  // every pixel written
+            if (rt.tlasBuilt) b.accelerationStructureRead(*rt.tlasBuilt);
         },
         [this, in, rt, push](const Data& data, graph::PassContext& pc) {
             VkCommandBuffer cmd = pc.cmd();
@@ -94,6 +95,7 @@ graph::ImageHandle RaytracePass::addGlass(graph::RenderGraph& g, const FrameInpu
             data.regions = b.storageRead(glass.regions);
             data.regionList = b.storageRead(glass.regionList);
             data.out = b.storageReadWrite(atlas);  // texels outside the panes keep the clear value
+            if (rt.tlasBuilt) b.accelerationStructureRead(*rt.tlasBuilt);
         },
         [this, in, rt, push, dispatch](const Data& data, graph::PassContext& pc) {
             VkCommandBuffer cmd = pc.cmd();
@@ -109,6 +111,29 @@ graph::ImageHandle RaytracePass::addGlass(graph::RenderGraph& g, const FrameInpu
             shader::dispatchCovering(cmd, dispatch, gpu::kRaytraceGroupSize);
         });
     return d.out;
+}
+
+graph::BufferHandle RaytracePass::addTlasRebuild(graph::RenderGraph& g, gpu::SceneAccelerationStructures& structures, const gpu::GpuScene& scene,
+                                                 uint32_t slot) {
+    structures.prepareRebuild(slot, scene);
+    tlasStorage_.buffer = structures.tlasStorage();
+    tlasStorage_.desc = {structures.tlasStorageBytes()};
+    scratch_.buffer = structures.scratchBuffer();
+    scratch_.desc = {structures.scratchBytes()};
+    struct Data {
+        graph::BufferHandle tlas;
+    };
+    const graph::BufferHandle tlas = g.importBuffer("raytraced.tlas.storage", &tlasStorage_);
+    const graph::BufferHandle scratch = g.importBuffer("raytraced.tlas.scratch", &scratch_);
+    const gpu::SceneAccelerationStructures* built = &structures;
+    const Data& d = g.addPass<Data>(
+        "raytraced.tlas", graph::QueueKind::Compute,
+        [&](graph::PassBuilder& b, Data& data) {
+            data.tlas = b.accelerationStructureBuild(tlas);
+            b.accelerationStructureBuild(scratch);
+        },
+        [built, slot](const Data&, graph::PassContext& pc) { built->recordRebuild(pc.cmd(), slot); });
+    return d.tlas;
 }
 
 }  // namespace ppr::passes

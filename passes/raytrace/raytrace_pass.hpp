@@ -4,9 +4,13 @@
 //   raytraced.reflect      every reflector pixel's mirror ray → the reflection image (common/reflection.h)
 //   raytraced.glass.clear  the glass reflection atlas cleared to "no reflection"
 //   raytraced.glass        every glass pane's atlas texel's mirror ray → the atlas (PPR's / planar's layout)
+//   raytraced.tlas         animated scenes only: the TLAS rebuilt with this frame's pose
 #include "common/frame_inputs.hpp"
 #include "gbuffer/gbuffer_pass.hpp"
+#include "gpu/acceleration_structures.hpp"
 #include "graph/graph.hpp"
+
+#include <optional>
 
 namespace ppr::passes {
 
@@ -16,6 +20,7 @@ struct RaytraceInputs {
     graph::ImageHandle shadowMap;  // the lighting pass's shadow map
     VkBuffer reflectors = VK_NULL_HANDLE;  // this frame slot's ReflectorData[]
     VkAccelerationStructureKHR tlas = VK_NULL_HANDLE;
+    std::optional<graph::BufferHandle> tlasBuilt;  // the TLAS's storage as this frame's rebuild left it (animated scenes)
 };
 
 // This frame's glass atlas layout (glass_reflect/glass_regions.hpp).
@@ -34,10 +39,16 @@ public:
                                  bool normalMapped) const;
     // "raytraced.glass.clear" + "raytraced.glass": the panes' reflections in the atlas layout.
     graph::ImageHandle addGlass(graph::RenderGraph& g, const FrameInputs& in, const RaytraceInputs& rt, const RaytraceGlass& glass) const;
+    // "raytraced.tlas": rebuilds `structures`' TLAS for frame `slot` with the scene's current pose
+    // (animated scenes); returns the TLAS storage for RaytraceInputs::tlasBuilt. Call once per frame.
+    graph::BufferHandle addTlasRebuild(graph::RenderGraph& g, gpu::SceneAccelerationStructures& structures, const gpu::GpuScene& scene,
+                                       uint32_t slot);
 
 private:
     const vk::Context& ctx_;
     shader::Pipeline screen_, glass_;
+    // The graph keeps the TLAS storage's and the scratch's last access here from frame to frame.
+    graph::ExternalBuffer tlasStorage_, scratch_;
 };
 
 }  // namespace ppr::passes

@@ -47,14 +47,14 @@ graph::ImageHandle ShadowPass::add(graph::RenderGraph& g, const FrameInputs& in,
             pipeline_.bind(cmd);
             shader::PushDescriptors(ctx_)
                 .uniformBuffer(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
-                .storageBuffer(in.scene->drawBuffer())
+                .storageBuffer(in.draws)
                 .push(cmd, pipeline_);
             in.scene->drawOpaque(cmd, false, [&](uint32_t i) { pipeline_.pushConstants(cmd, gpu::DrawPush{i, 0, 0, 0}); });
             if (!anyMasked_) return;
             maskedPipeline_.bind(cmd);
             shader::PushDescriptors(ctx_)
                 .uniformBuffer(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
-                .storageBuffer(in.scene->drawBuffer())
+                .storageBuffer(in.draws)
                 .storageBuffer(in.scene->materialBuffer())
                 .push(cmd, maskedPipeline_);
             VkDescriptorSet textures = in.scene->textureSet();

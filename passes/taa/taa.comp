@@ -3,15 +3,19 @@
 // TAA resolve: the current (jittered) HDR frame blended with last frame's resolved image, fetched where
 // this pixel's surface was then. Writes the new history, which is also the frame's output.
 #include "common/bindings.glsl"
+#include "gpu/scene_data.h"
 #include "taa/taa.h"
 #include "taa/taa_color.glsl"
-#include "taa/taa_motion.glsl"
 
 layout(local_size_x = kTaaGroupSize, local_size_y = kTaaGroupSize) in;
 layout(set = 0, binding = 1) uniform sampler2D currentColor;  // nearest
 layout(set = 0, binding = 2) uniform sampler2D depthTex;      // nearest
 layout(set = 0, binding = 3) uniform sampler2D historyColor;  // linear, clamped
 layout(set = 0, binding = 4, rgba16f) uniform writeonly image2D outColor;
+layout(set = 0, binding = 5) uniform sampler2D materialTex;  // G-buffer: alpha = motion slot
+layout(set = 0, binding = 6, scalar) readonly buffer Motions { MotionData motions[]; };
+#include "taa/taa_motion.glsl"
+#include "taa/object_motion.glsl"
 layout(push_constant, scalar) uniform Push { TaaPush pc; };
 
 // The group's pixels and a one-pixel border, loaded once: each pixel reads its 3×3 neighbourhood from
@@ -34,12 +38,14 @@ void main() {
     // an edge's pixels follow the foreground's motion, not the background's).
     vec3 m1 = vec3(0.0), m2 = vec3(0.0);
     float nearestDepth = 0.0;  // reverse-Z: larger is nearer
+    ivec2 nearest = ivec2(0);  // where it is (its object's motion is the one taken)
     ivec2 local = ivec2(gl_LocalInvocationID.xy) + 1;
     for (int y = -1; y <= 1; ++y)
         for (int x = -1; x <= 1; ++x) {
             vec4 t = tile[(local.y + y) * kTile + local.x + x];
             m1 += t.xyz;
             m2 += t.xyz * t.xyz;
+            if (t.w > nearestDepth) nearest = ivec2(x, y);
             nearestDepth = max(nearestDepth, t.w);
         }
     vec3 mean = m1 / 9.0;
@@ -47,7 +53,8 @@ void main() {
     vec3 currentY = tile[local.y * kTile + local.x].xyz;
 
     float prevW;
-    vec2 historyUv = previousUv((vec2(pix) + 0.5) * frame.invScreenSize, nearestDepth, prevW);
+    uint slot = motionSlotAt(clamp(pix + nearest, ivec2(0), size - 1));
+    vec2 historyUv = previousUvMoving((vec2(pix) + 0.5) * frame.invScreenSize, nearestDepth, slot, prevW);
     bool onScreen = prevW > 0.0 && all(greaterThanEqual(historyUv, vec2(0.0))) && all(lessThanEqual(historyUv, vec2(1.0)));
 
     vec3 resolved = currentY;

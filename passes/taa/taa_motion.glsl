@@ -13,3 +13,4 @@ vec2 previousUvOfPoint(vec2 uv, vec4 world, out float prevW) {
 vec2 previousUv(vec2 uv, float depth, out float prevW) {
     return previousUvOfPoint(uv, frame.invViewProj * vec4(uv * 2.0 - 1.0, depth, 1.0), prevW);
 }
+

@@ -40,7 +40,7 @@ graph::ImageHandle TaaPass::addReflection(graph::RenderGraph& g, const FrameInpu
 }
 
 graph::ImageHandle TaaPass::add(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history, graph::ImageHandle hdr,
-                                graph::ImageHandle depth) const {
+                                graph::ImageHandle depth, graph::ImageHandle material) const {
     const graph::HistoryImage h = g.history(history, kHistoryName, {in.extent.width, in.extent.height, kHistoryFormat, 1});
     gpu::TaaPush push{};
     push.historyValid = h.previousValid ? 1u : 0u;
@@ -51,6 +51,8 @@ graph::ImageHandle TaaPass::add(graph::RenderGraph& g, const FrameInputs& in, gr
         .sampled(depth, in.samplers->nearestClamp)
         .sampled(h.previous, in.samplers->linearClamp)
         .storageWrite(h.current, &out)
+        .sampled(material, in.samplers->nearestClamp)
+        .hostStorage(in.motion)
         .push(push)
         .dispatch(in.extent, gpu::kTaaGroupSize);
     return out;

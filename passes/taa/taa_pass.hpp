@@ -1,6 +1,7 @@
 #pragma once
 // TAA resolve (--set taa=1): the jittered HDR frame + the history image ("taa.color", a graph history
-// resource) → the new history, which is the frame's anti-aliased HDR output.
+// resource) → the new history, which is the frame's anti-aliased HDR output. The G-buffer's material
+// target gives each pixel's motion slot (per-object motion of an animated scene's moving draws).
 #include "common/frame_inputs.hpp"
 #include "graph/history.hpp"
 
@@ -23,7 +24,7 @@ public:
 
     explicit TaaPass(const vk::Context& ctx);
     graph::ImageHandle add(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history, graph::ImageHandle hdr,
-                           graph::ImageHandle depth) const;
+                           graph::ImageHandle depth, graph::ImageHandle material) const;
     // The reflection's own history (taa_reflection.comp): returns the accumulated reflection image for
     // the composite (same class codes in alpha as the technique's).
     graph::ImageHandle addReflection(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history,

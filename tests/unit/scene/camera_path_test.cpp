@@ -19,6 +19,16 @@ TEST(CameraPath, StillRepeatsTheStart) {
     EXPECT_EQ(p[4].position, kStart.position);
 }
 
+TEST(CameraPath, AnimateHoldsTheCameraAndRunsTheSceneClock) {
+    const std::vector<CameraPose> p = namedCameraPath("animate", kStart, 4);
+    EXPECT_TRUE(isStill(p));
+    ASSERT_TRUE(cameraPathSceneTime("animate", 0).has_value());
+    EXPECT_EQ(*cameraPathSceneTime("animate", 0), 0.0);
+    EXPECT_DOUBLE_EQ(*cameraPathSceneTime("animate", 3), 3 * kFrameSeconds);
+    // Every other path keeps the scene at rest, so its figures measure camera motion alone.
+    for (const char* name : {"still", "strafe", "dolly", "orbit", "poses.txt"}) EXPECT_FALSE(cameraPathSceneTime(name, 3)) << name;
+}
+
 TEST(CameraPath, StrafeMovesRightAndDollyForward) {
     const std::vector<CameraPose> strafe = namedCameraPath("strafe", kStart, 11);
     const std::vector<CameraPose> dolly = namedCameraPath("dolly", kStart, 11);
