@@ -159,8 +159,8 @@ const std::vector<SettingDecl>& settingDecls() {
                           "virtual",
                           "taa=1: the reflection's own history, fetched by the surface's motion (a plain TAA), the smallest of the "
                           "surface's and the reflected point's motion with their parallax-scaled forms (candidates), or the virtual "
-                          "point's motion with disocclusion rejected by its depth (virtual; ppr and planar give path lengths, the "
-                          "other techniques fall back to the surface's motion)"),
+                          "point's motion with disocclusion rejected by its depth (virtual; every technique gives path lengths: "
+                          "pixels without one, misses, fall back to the surface's motion)"),
         number("exposure", "frame", [](FrameSettings& s) -> float& { return s.view.exposure; }, 1, 0.01, 100.0, "exposure multiplier before tonemapping"),
         integer("shadowres", "frame", [](FrameSettings& s) -> uint32_t& { return s.view.shadowRes; }, 2048, 256, 8192,
                 "shadow map resolution (texels per side)"),

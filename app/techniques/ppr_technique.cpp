@@ -101,7 +101,6 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
     if (taa) reflect.distance = f.graph.createImage("ppr.distance", {f.in.extent.width, f.in.extent.height, VK_FORMAT_R32_SFLOAT, 1});
     graph::ImageHandle distance;
     graph::ImageHandle reflection = reflect_.add(f.graph, f.in, reflect, &distance);
-    if (taa) f.board.put(ReflectionDistance{distance});
     // The debug views PPR draws over the whole screen are left as they are.
     const uint32_t debug = reflect.debugView;
     const bool pprDebugView = debug == gpu::kDebugIntermediate || debug == gpu::kDebugHoles || debug == gpu::kDebugTiles;
@@ -110,8 +109,10 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
         const passes::HizAtlas hiz = f.depthHierarchy();
         fallback.hiz = hiz.image;
         fallback.hizLevels = hiz.levels;
-        reflection = fallback_->addFallback(f.graph, f.in, fallback, reflection, "ppr.fallback");
+        // The fallback's pixels get their path lengths from their SSR hits.
+        reflection = fallback_->addFallback(f.graph, f.in, fallback, reflection, "ppr.fallback", taa ? &distance : nullptr);
     }
+    if (taa) f.board.put(ReflectionDistance{distance});
     return reflection;
 }
 

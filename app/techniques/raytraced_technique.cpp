@@ -36,7 +36,12 @@ std::optional<graph::ImageHandle> RaytracedTechnique::addReference(TechniqueFram
 std::optional<graph::ImageHandle> RaytracedTechnique::addReflection(TechniqueFrame& f) {
     if (!prepare()) return std::nullopt;
     const passes::RaytraceInputs rt = inputs(f);
-    const graph::ImageHandle reflection = pass_->addScreen(f.graph, f.in, rt, f.gbuffer, f.settings.ppr.normalMap != NormalMap::Off);
+    // TAA's reflection history reprojects through the virtual point, which needs each pixel's path length.
+    const bool taa = f.settings.taa.enabled && f.settings.view.debug == gpu::kDebugNone;
+    graph::ImageHandle distance;
+    const graph::ImageHandle reflection =
+        pass_->addScreen(f.graph, f.in, rt, f.gbuffer, f.settings.ppr.normalMap != NormalMap::Off, taa ? &distance : nullptr);
+    if (taa) f.board.put(ReflectionDistance{distance});
     // Glass panes: the atlas layout PPR and the planar reference use this frame.
     FrameServices& s = f.services;
     const std::optional<GlassRegionsBound> bound =

@@ -27,7 +27,12 @@ std::optional<graph::ImageHandle> SsrTechnique::addReflection(TechniqueFrame& f)
         inputs.hiz = hiz.image;
         inputs.hizLevels = hiz.levels;
     }
-    return pass_->addTechnique(f.graph, f.in, inputs);
+    // TAA's reflection history reprojects through the virtual point, which needs each pixel's path length.
+    const bool taa = f.settings.taa.enabled && f.settings.view.debug == gpu::kDebugNone;
+    graph::ImageHandle distance;
+    const graph::ImageHandle reflection = pass_->addTechnique(f.graph, f.in, inputs, taa ? &distance : nullptr);
+    if (taa) f.board.put(ReflectionDistance{distance});
+    return reflection;
 }
 
 }  // namespace ppr::app

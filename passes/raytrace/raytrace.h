@@ -7,6 +7,7 @@
 PPR_CONST(uint, kRaytraceGroupSize, 8u)
 // Flags
 PPR_CONST(uint, kRaytraceNormalMapped, 1u)  // reflect about the G-buffer's normal-mapped normal, not the reflector's plane
+PPR_CONST(uint, kRaytraceWriteDistance, 2u)  // write each pixel's reflected path length (TAA's virtual point; 0 = none)
 // Hits closer to the reflector's plane than this (metres) are ignored: the planar reference's mirrored
 // views clip at the plane raised by the same distance (scene::mirrorView's clipOffset), so that
 // surfaces lying on the plane never reflect themselves.

@@ -266,6 +266,9 @@ bool passesAlphaMask(uint draw, uint prim, vec2 bary) {
     return alpha >= m.alphaCutoff;
 }
 
+// The distance from `origin` to the last traceReflection()'s hit, 0 when it hit nothing (the sky).
+float traceHitT = 0.0;
+
 // The reflection seen along `dir` from `origin` (see shadeHit): the ray query's committed hit, shaded.
 vec4 traceReflection(ReflectorData plane, vec3 n, ivec2 pix, vec3 origin, vec3 dir, float eyeDistance) {
     rayQueryEXT query;
@@ -276,7 +279,9 @@ vec4 traceReflection(ReflectorData plane, vec3 n, ivec2 pix, vec3 origin, vec3 d
                             uint(rayQueryGetIntersectionPrimitiveIndexEXT(query, false)), rayQueryGetIntersectionBarycentricsEXT(query, false)))
             rayQueryConfirmIntersectionEXT(query);
     }
+    traceHitT = 0.0;
     if (rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionTriangleEXT) return skyReflection(dir);
+    traceHitT = rayQueryGetIntersectionTEXT(query, true);
     vec2 bary = rayQueryGetIntersectionBarycentricsEXT(query, true);
     return shadeHit(plane, n, pix, origin, dir, eyeDistance, uint(rayQueryGetIntersectionInstanceCustomIndexEXT(query, true)),
                     uint(rayQueryGetIntersectionPrimitiveIndexEXT(query, true)), rayQueryGetIntersectionTEXT(query, true),

@@ -41,13 +41,17 @@ RaytracePass::RaytracePass(const vk::Context& ctx, const gpu::GpuScene& scene) :
 }
 
 graph::ImageHandle RaytracePass::addScreen(graph::RenderGraph& g, const FrameInputs& in, const RaytraceInputs& rt, const GBuffer& gb,
-                                           bool normalMapped) const {
+                                           bool normalMapped, graph::ImageHandle* distanceOut) const {
     struct Data {
-        graph::ImageHandle depth, shadowMap, normal, reflector, out;
+        graph::ImageHandle depth, shadowMap, normal, reflector, out, distance;
     };
     const graph::ImageHandle target = g.createImage("raytraced.reflection", {in.extent.width, in.extent.height, kReflectionFormat, 1});
+    // Path lengths only when asked for (TAA); otherwise a 1×1 stand-in the shader never writes.
+    const VkExtent2D distanceSize = distanceOut ? in.extent : VkExtent2D{1, 1};
+    const graph::ImageHandle distance =
+        g.createImage(distanceOut ? "raytraced.distance" : "raytraced.distance.unused", {distanceSize.width, distanceSize.height, VK_FORMAT_R32_SFLOAT, 1});
     gpu::RaytracePush push{};
-    push.flags = normalMapped ? gpu::kRaytraceNormalMapped : 0u;
+    push.flags = (normalMapped ? gpu::kRaytraceNormalMapped : 0u) | (distanceOut ? gpu::kRaytraceWriteDistance : 0u);
     push.looseCount = in.looseCount;
     const Data& d = g.addPass<Data>(
         "raytraced.reflect", graph::QueueKind::Compute,
@@ -57,6 +61,7 @@ graph::ImageHandle RaytracePass::addScreen(graph::RenderGraph& g, const FrameInp
             data.normal = b.sampled(gb.normal);
             data.reflector = b.sampled(gb.reflector);
             data.out = b.storageWrite(target);  // every pixel written
+            data.distance = b.storageWrite(distance);  // every pixel, when written at all
             if (rt.tlasBuilt) b.accelerationStructureRead(*rt.tlasBuilt);
         },
         [this, in, rt, push](const Data& data, graph::PassContext& pc) {
@@ -67,11 +72,13 @@ graph::ImageHandle RaytracePass::addScreen(graph::RenderGraph& g, const FrameInp
                 .sampled(pc.view(data.normal), pc.layout(data.normal), in.samplers->nearestClamp)
                 .sampled(pc.view(data.reflector), pc.layout(data.reflector), in.samplers->nearestClamp)
                 .storageImage(pc.view(data.out))
+                .storageImage(pc.view(data.distance))
                 .push(cmd, screen_);
             bindTextures(cmd, screen_, *in.scene);
             screen_.pushConstants(cmd, push);
             shader::dispatchCovering(cmd, in.extent, gpu::kRaytraceGroupSize);
         });
+    if (distanceOut) *distanceOut = d.distance;
     return d.out;
 }
 

@@ -34,9 +34,10 @@ public:
     static constexpr VkFormat kReflectionFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
     RaytracePass(const vk::Context& ctx, const gpu::GpuScene& scene);
     // "raytraced.reflect": the reflection of every reflector pixel; `normalMapped` reflects about the
-    // G-buffer's normal instead of the reflector's plane.
+    // G-buffer's normal instead of the reflector's plane. `distanceOut`: also each pixel's reflected
+    // path length, eye → reflector → hit (R32F, 0 = none; TAA's virtual point).
     graph::ImageHandle addScreen(graph::RenderGraph& g, const FrameInputs& in, const RaytraceInputs& rt, const GBuffer& gb,
-                                 bool normalMapped) const;
+                                 bool normalMapped, graph::ImageHandle* distanceOut = nullptr) const;
     // "raytraced.glass.clear" + "raytraced.glass": the panes' reflections in the atlas layout.
     graph::ImageHandle addGlass(graph::RenderGraph& g, const FrameInputs& in, const RaytraceInputs& rt, const RaytraceGlass& glass) const;
     // "raytraced.tlas": rebuilds `structures`' TLAS for frame `slot` with the scene's current pose

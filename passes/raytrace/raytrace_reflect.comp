@@ -10,6 +10,7 @@ layout(local_size_x = kRaytraceGroupSize, local_size_y = kRaytraceGroupSize) in;
 layout(set = 0, binding = 11) uniform sampler2D normalTex;
 layout(set = 0, binding = 12) uniform usampler2D reflectorTex;
 layout(set = 0, binding = 13, rgba16f) uniform writeonly image2D reflection;
+layout(set = 0, binding = 14, r32f) uniform writeonly image2D pathLength;  // kRaytraceWriteDistance: eye → reflector → hit
 
 // The mirror ray of reflector pixel `pix` (reflector index + 1 `id`), false when the planar
 // reference has no reflection there (the camera sees the plane from behind, or the pixel's eye ray
@@ -45,7 +46,12 @@ void main() {
     vec4 result = vec4(0.0, 0.0, 0.0, kReflectionNone);
     ReflectorData r;
     vec3 n, origin, dir;
-    if (id != 0u && reflectorRay(pix, id, r, n, origin, dir))
-        result = traceReflection(r, n, pix, origin, dir, distance(frame.cameraPos.xyz, origin));
+    float path = 0.0;
+    if (id != 0u && reflectorRay(pix, id, r, n, origin, dir)) {
+        float eyeDistance = distance(frame.cameraPos.xyz, origin);
+        result = traceReflection(r, n, pix, origin, dir, eyeDistance);
+        if (traceHitT > 0.0) path = eyeDistance + traceHitT;
+    }
     imageStore(reflection, pix, result);
+    if ((pc.flags & kRaytraceWriteDistance) != 0u) imageStore(pathLength, pix, vec4(path));
 }

@@ -17,6 +17,7 @@ PPR_CONST(uint, kSsrWriteAll, 2u)     // whole-screen dispatch into a fresh imag
 PPR_CONST(uint, kSsrMappedNormals, 4u)  // reflector pixels reflect about the normal-mapped normal (--set normalmap)
 PPR_CONST(uint, kSsrEnvironment, 8u)    // misses show the environment, hits fade into it at the border (--set fallback_env)
 PPR_CONST(uint, kSsrEnvironmentProbe, 16u)  // ... and the environment is the reflection probe (env_source=probe), else the sky
+PPR_CONST(uint, kSsrWriteDistance, 32u)  // write each shaded pixel's reflected path length, eye → surface → hit (0 = none; TAA)
 // Pixel classes shaded (SsrPush::pixelClasses): bit kTileClassPlanar = reflector-rectangle pixels,
 // bit kTileClassOther = reflective pixels no rectangle covers (rough or curved surfaces).
 

@@ -2,8 +2,8 @@
 // result. A technique includes this and defines
 //     bool ssrTrace(SsrRay ray, out vec2 hitPixel);
 // returning the pixel (centre coordinates) whose lit colour the ray reflects, or false for a miss.
-// Bindings 9 and 10 are the environment's (common/environment.glsl); define SSR_USES_HIZ before
-// including to bind the depth hierarchy (binding 11).
+// Binding 9 takes the path lengths (kSsrWriteDistance), 10 and 11 are the environment's
+// (common/environment.glsl); define SSR_USES_HIZ before including to bind the depth hierarchy (12).
 #include "common/bindings.glsl"
 #include "common/brdf.glsl"
 #include "common/reflection.h"
@@ -20,11 +20,12 @@ layout(set = 0, binding = 5) uniform sampler2D sceneColor;  // lit scene, biline
 layout(set = 0, binding = 6, scalar) readonly buffer Reflectors { ReflectorData reflectors[]; };
 layout(set = 0, binding = 7, scalar) readonly buffer TileLists { uint tileLists[]; };
 layout(set = 0, binding = 8, rgba16f) uniform image2D outReflection;
+layout(set = 0, binding = 9, r32f) uniform writeonly image2D outDistance;  // kSsrWriteDistance
 #ifdef SSR_USES_HIZ
-layout(set = 0, binding = 11, r32f) uniform readonly image2D hizAtlas;
+layout(set = 0, binding = 12, r32f) uniform readonly image2D hizAtlas;
 #endif
 layout(push_constant, scalar) uniform Push { SsrPush pc; };
-#define ENV_BINDING 9  // the probe's data and cube (9, 10)
+#define ENV_BINDING 10  // the probe's data and cube (10, 11)
 #include "common/environment.glsl"
 
 bool environmentUsesProbe() { return (pc.flags & kSsrEnvironmentProbe) != 0u; }
@@ -124,11 +125,16 @@ void main() {
     bool reflective = texelFetch(materialTex, pix, 0).b > 0.5;  // gbuffer.h: material b = reflective flag
     uint pixelClass = id != 0u ? kTileClassPlanar : (reflective ? kTileClassOther : kTileClassCount);
     bool shade = pixelClass != kTileClassCount && (pc.pixelClasses & (1u << pixelClass)) != 0u;
+    bool writeDistance = (pc.flags & kSsrWriteDistance) != 0u;
     if (!shade) {
-        if ((pc.flags & kSsrWriteAll) != 0u) imageStore(outReflection, pix, vec4(0.0));
+        if ((pc.flags & kSsrWriteAll) != 0u) {
+            imageStore(outReflection, pix, vec4(0.0));
+            if (writeDistance) imageStore(outDistance, pix, vec4(0.0));
+        }
         return;
     }
     vec4 result = vec4(0.0);
+    float path = 0.0;  // eye → surface → reflected point, 0 = none
     float depth = texelFetch(depthTex, pix, 0).r;
     SsrRay ray;
     vec2 hit;
@@ -137,9 +143,13 @@ void main() {
         if (ssrTrace(ray, hit)) {
             vec3 c = textureLod(sceneColor, hit * frame.invScreenSize, 0.0).rgb;
             result = vec4(env ? environmentBlend(c, hit, ray.worldOrigin, ray.worldDir) : c, kReflectionHit);
+            // The reflected point is the surface seen at the hit pixel.
+            vec3 reflected = worldFromDepth(hit * frame.invScreenSize, texelFetch(depthTex, ivec2(hit), 0).r);
+            path = distance(frame.cameraPos.xyz, ray.worldOrigin) + distance(ray.worldOrigin, reflected);
         } else if (env) {
             result = vec4(environmentRadiance(ray.worldOrigin, ray.worldDir), kReflectionEnvironment);
         }
     }
     imageStore(outReflection, pix, result);
+    if (writeDistance) imageStore(outDistance, pix, vec4(path));
 }

@@ -16,7 +16,7 @@ SsrTracePass::SsrTracePass(const vk::Context& ctx, shader::Spirv spirv, std::str
 
 graph::ImageHandle SsrTracePass::trace(graph::RenderGraph& g, const FrameInputs& in, const SsrInputs& inputs, graph::ImageHandle target,
                                        const std::string& passName, uint32_t pixelClasses, std::optional<uint32_t> listClass,
-                                       bool fresh) const {
+                                       bool fresh, graph::ImageHandle* distance) const {
     gpu::SsrPush push{};
     push.maxDistance = inputs.params.maxDistance;
     push.thickness = inputs.params.thickness;
@@ -34,6 +34,7 @@ graph::ImageHandle SsrTracePass::trace(graph::RenderGraph& g, const FrameInputs&
     if (inputs.mappedNormals) push.flags |= gpu::kSsrMappedNormals;
     if (inputs.environment.fallback) push.flags |= gpu::kSsrEnvironment;
     if (inputs.environment.probe) push.flags |= gpu::kSsrEnvironmentProbe;
+    if (distance) push.flags |= gpu::kSsrWriteDistance;
     const GBuffer& gb = *inputs.gbuffer;
     const VkSampler point = in.samplers->nearestClamp;
     graph::ImageHandle out;
@@ -49,6 +50,10 @@ graph::ImageHandle SsrTracePass::trace(graph::RenderGraph& g, const FrameInputs&
     // A whole-screen pass into a fresh image writes every pixel; otherwise untouched pixels are kept.
     if (fresh && !listClass) pass.storageWrite(target, &out);
     else pass.storageReadWrite(target, &out);
+    // Path lengths beside it, written the same way; without them a 1×1 stand-in the shader never writes.
+    if (!distance) pass.storageWrite(g.createImage(passName + ".distance.unused", {1, 1, VK_FORMAT_R32_SFLOAT, 1}), nullptr);
+    else if (fresh && !listClass) pass.storageWrite(*distance, distance);
+    else pass.storageReadWrite(*distance, distance);
     pass.uniform(inputs.environment.probeData, 0, sizeof(gpu::EnvProbeData)).sampled(inputs.environment.probeCube, in.samplers->linearClamp);
     if (usesHiz_) pass.storageRead(*inputs.hiz);
     pass.push(push);
@@ -57,21 +62,24 @@ graph::ImageHandle SsrTracePass::trace(graph::RenderGraph& g, const FrameInputs&
     return out;
 }
 
-graph::ImageHandle SsrTracePass::addTechnique(graph::RenderGraph& g, const FrameInputs& in, const SsrInputs& inputs) const {
+graph::ImageHandle SsrTracePass::addTechnique(graph::RenderGraph& g, const FrameInputs& in, const SsrInputs& inputs,
+                                              graph::ImageHandle* distanceOut) const {
     graph::ImageHandle image = g.createImage("reflection", {in.extent.width, in.extent.height, kReflectionFormat, 1});
+    if (distanceOut) *distanceOut = g.createImage(name_ + ".distance", {in.extent.width, in.extent.height, VK_FORMAT_R32_SFLOAT, 1});
     const uint32_t all = (1u << gpu::kTileClassPlanar) | (1u << gpu::kTileClassOther);
-    if (!inputs.indirect) return trace(g, in, inputs, image, name_, all, std::nullopt, true);
+    if (!inputs.indirect) return trace(g, in, inputs, image, name_, all, std::nullopt, true, distanceOut);
     // Tiles in neither list hold no reflective pixel: "no reflection" (all zero), as the whole-screen
     // pass writes there. A tile in both lists has each pixel shaded by exactly one of the passes.
     image = addClearPass(g, in, name_ + ".clear", image, VkClearColorValue{});
-    image = trace(g, in, inputs, image, name_ + ".planar", 1u << gpu::kTileClassPlanar, gpu::kTileClassPlanar, false);
-    return trace(g, in, inputs, image, name_ + ".other", 1u << gpu::kTileClassOther, gpu::kTileClassOther, false);
+    if (distanceOut) *distanceOut = addClearPass(g, in, name_ + ".distance.clear", *distanceOut, VkClearColorValue{});
+    image = trace(g, in, inputs, image, name_ + ".planar", 1u << gpu::kTileClassPlanar, gpu::kTileClassPlanar, false, distanceOut);
+    return trace(g, in, inputs, image, name_ + ".other", 1u << gpu::kTileClassOther, gpu::kTileClassOther, false, distanceOut);
 }
 
 graph::ImageHandle SsrTracePass::addFallback(graph::RenderGraph& g, const FrameInputs& in, const SsrInputs& inputs,
-                                             graph::ImageHandle reflection, const std::string& passName) const {
+                                             graph::ImageHandle reflection, const std::string& passName, graph::ImageHandle* distance) const {
     const std::optional<uint32_t> list = inputs.indirect ? std::optional<uint32_t>(gpu::kTileClassOther) : std::nullopt;
-    return trace(g, in, inputs, reflection, passName, 1u << gpu::kTileClassOther, list, false);
+    return trace(g, in, inputs, reflection, passName, 1u << gpu::kTileClassOther, list, false, distance);
 }
 
 }  // namespace ppr::passes

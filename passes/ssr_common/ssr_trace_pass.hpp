@@ -42,15 +42,21 @@ public:
     // The technique on its own: a new reflection image (common/reflection.h) with every reflective
     // pixel shaded. Indirect: "<name>.clear", then "<name>.planar" and "<name>.other" over the two
     // tile lists; otherwise one whole-screen pass "<name>".
-    graph::ImageHandle addTechnique(graph::RenderGraph& g, const FrameInputs& in, const SsrInputs& inputs) const;
+    // `distanceOut`: also a new R32F image of each pixel's reflected path length (eye → surface → the
+    // point seen at the hit; 0 = none), for TAA's virtual point.
+    graph::ImageHandle addTechnique(graph::RenderGraph& g, const FrameInputs& in, const SsrInputs& inputs,
+                                    graph::ImageHandle* distanceOut = nullptr) const;
     // Shades only reflective pixels that no reflector rectangle covers into `reflection` (read-write),
-    // in a pass named `passName`: over the non-planar tile list, or the whole screen.
+    // in a pass named `passName`: over the non-planar tile list, or the whole screen. `distance`, when
+    // given, is the caller's path-length image: those pixels' lengths are written into it (in/out).
     graph::ImageHandle addFallback(graph::RenderGraph& g, const FrameInputs& in, const SsrInputs& inputs, graph::ImageHandle reflection,
-                                   const std::string& passName) const;
+                                   const std::string& passName, graph::ImageHandle* distance = nullptr) const;
 
 private:
+    // `distance`: the path-length image to write (updated to the pass's version), or none.
     graph::ImageHandle trace(graph::RenderGraph& g, const FrameInputs& in, const SsrInputs& inputs, graph::ImageHandle target,
-                             const std::string& passName, uint32_t pixelClasses, std::optional<uint32_t> listClass, bool fresh) const;
+                             const std::string& passName, uint32_t pixelClasses, std::optional<uint32_t> listClass, bool fresh,
+                             graph::ImageHandle* distance) const;
     const vk::Context& ctx_;
     std::string name_;
     bool usesHiz_;

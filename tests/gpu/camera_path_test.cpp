@@ -70,6 +70,44 @@ TEST(CameraPathRun, VirtualReprojectionBeatsSurfaceAndCandidatesOnReflectorsUnde
     std::filesystem::remove_all(dir);
 }
 
+// The ray-traced reference gives its path lengths too (eye → reflector → hit), so its reflection
+// history finds the virtual point instead of falling back to the surface's motion.
+TEST(CameraPathRun, RaytracedReflectionsReprojectThroughTheirVirtualPoint) {
+    PPR_SKIP_WITHOUT_RAY_QUERY();
+    auto dir = tempDir("path-raytraced");
+    RunResult r = runPpr("compare --validation --path strafe --frames 8 --camera puddles --size 160x90 --reference raytraced "
+                         "--technique raytraced@taa=1,reproject=surface --technique raytraced@taa=1,reproject=virtual --out " + dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const nlohmann::json m = readJson(dir / "metrics.json");
+    EXPECT_EQ(m["validation_errors"], 0);
+    auto reflectorDb = [&](const char* mode) {
+        return m["techniques"][std::string("raytraced@taa=1,reproject=") + mode]["temporal"]["reflector_psnr_db_mean"].get<double>();
+    };
+    std::printf("raytraced, reflector pixels, strafe: surface %.2f dB, virtual %.2f dB\n", reflectorDb("surface"), reflectorDb("virtual"));
+    EXPECT_GT(reflectorDb("virtual"), reflectorDb("surface"));
+    std::filesystem::remove_all(dir);
+}
+
+// SSR gives path lengths from its hits (eye → surface → the point seen at the hit pixel): its
+// `virtual` rows no longer fall back to the surface's motion, so they differ from `surface`.
+TEST(CameraPathRun, SsrReflectionsReprojectThroughTheirVirtualPoint) {
+    auto dir = tempDir("path-ssr");
+    RunResult r = runPpr("compare --validation --path strafe --frames 6 --camera overview --size 160x90 "
+                         "--technique ssr-hiz@taa=1,reproject=surface --technique ssr-hiz@taa=1,reproject=virtual "
+                         "--technique ssr-linear@taa=1,reproject=virtual --technique ssr-hiz@taa=1,reproject=virtual,indirect=0 --out " +
+                         dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const nlohmann::json m = readJson(dir / "metrics.json");
+    EXPECT_EQ(m["validation_errors"], 0);
+    auto row = [&](const std::string& t) { return m["techniques"][t]["temporal"]["reflector_psnr_db_mean"].get<double>(); };
+    std::printf("ssr-hiz, reflector pixels, strafe: surface %.3f dB, virtual %.3f dB (whole-screen dispatch %.3f)\n",
+                row("ssr-hiz@taa=1,reproject=surface"), row("ssr-hiz@taa=1,reproject=virtual"), row("ssr-hiz@taa=1,reproject=virtual,indirect=0"));
+    EXPECT_NE(row("ssr-hiz@taa=1,reproject=surface"), row("ssr-hiz@taa=1,reproject=virtual"));
+    // The tile lists and the whole-screen dispatch write the same path lengths.
+    EXPECT_EQ(row("ssr-hiz@taa=1,reproject=virtual"), row("ssr-hiz@taa=1,reproject=virtual,indirect=0"));
+    std::filesystem::remove_all(dir);
+}
+
 TEST(CameraPathRun, StillPathMeasuresFlicker) {
     auto dir = tempDir("path-still");
     RunResult r = runPpr("compare --path still --frames 4 --camera overview --size 96x54 --technique planar --out " + dir.string());
