@@ -6,6 +6,5 @@
 uint motionSlotAt(ivec2 pix) { return uint(texelFetch(materialTex, pix, 0).a * float(kMaxMovingDraws) + 0.5); }
 vec2 previousUvMoving(vec2 uv, float depth, uint slot, out float prevW) {
     if (slot == 0u) return previousUv(uv, depth, prevW);
-    vec4 world = frame.invViewProj * vec4(uv * 2.0 - 1.0, depth, 1.0);
-    return previousUvOfPoint(uv, motions[slot].toPrevious * world, prevW);
+    return previousUvOfPoint(uv, motions[slot].toPrevious * worldOfPixel(uv, depth), prevW);
 }

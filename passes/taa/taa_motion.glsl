@@ -10,7 +10,7 @@ vec2 previousUvOfPoint(vec2 uv, vec4 world, out float prevW) {
     prevW = prevClip.w;
     return uv + 0.5 * (prevClip.xy / prevClip.w - (uv * 2.0 - 1.0 - frame.jitter.xy));
 }
-vec2 previousUv(vec2 uv, float depth, out float prevW) {
-    return previousUvOfPoint(uv, frame.invViewProj * vec4(uv * 2.0 - 1.0, depth, 1.0), prevW);
-}
+// The homogeneous world point this frame shows at `uv` with reverse-Z `depth`.
+vec4 worldOfPixel(vec2 uv, float depth) { return frame.invViewProj * vec4(uv * 2.0 - 1.0, depth, 1.0); }
+vec2 previousUv(vec2 uv, float depth, out float prevW) { return previousUvOfPoint(uv, worldOfPixel(uv, depth), prevW); }
 
