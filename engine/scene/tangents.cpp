@@ -18,8 +18,10 @@ void generateFlatNormals(std::vector<Vertex>& vertices, std::vector<uint32_t>& i
     for (size_t t = 0; t + 2 < indices.size(); t += 3) {
         Vertex v[3] = {vertices[indices[t]], vertices[indices[t + 1]], vertices[indices[t + 2]]};
         glm::vec3 n = glm::cross(v[1].position - v[0].position, v[2].position - v[0].position);
-        const float len = glm::length(n);
-        n = (len > 0.0f && std::isfinite(len)) ? n / len : glm::vec3(0, 1, 0);  // degenerate triangle
+        // Scaled to its largest component first: a tiny triangle's squared length is subnormal (or 0),
+        // and dividing by its imprecise root gives a normal percent off unit length (found by fuzz_gltf).
+        const float largest = glm::max(glm::abs(n.x), glm::max(glm::abs(n.y), glm::abs(n.z)));
+        n = (largest > 0.0f && std::isfinite(largest)) ? glm::normalize(n / largest) : glm::vec3(0, 1, 0);  // degenerate triangle
         for (auto& x : v) {
             x.normal = n;
             flat.push_back(x);

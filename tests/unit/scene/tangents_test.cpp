@@ -73,3 +73,16 @@ TEST(Tangents, FlatNormalsUnindex) {
     EXPECT_NEAR(vs[0].normal.y, 1.0f, 1e-6f);  // CCW seen from +Y
     EXPECT_NEAR(vs[3].normal.y, -1.0f, 1e-6f);
 }
+
+// A triangle 1e-11 across has a cross product whose squared length is subnormal: its normal must still
+// be unit length (fuzz_gltf found one a percent off; tests/data/fuzz/regressions/gltf).
+TEST(Tangents, FlatNormalOfATinyTriangleIsUnit) {
+    for (float size : {1e-11f, 3e-12f, 1e-19f, 1e-30f}) {
+        std::vector<Vertex> vs = {vert({0, 0, 0}, {0, 0}), vert({size, 0, 0}, {1, 0}), vert({0, 0, -size}, {0, 1})};
+        std::vector<uint32_t> idx = {0, 1, 2};
+        detail::generateFlatNormals(vs, idx);
+        SCOPED_TRACE(size);
+        for (const Vertex& v : vs) EXPECT_NEAR(glm::length(v.normal), 1.0f, 1e-6f);
+        EXPECT_NEAR(vs[0].normal.y, 1.0f, 1e-6f);
+    }
+}
