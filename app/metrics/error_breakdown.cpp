@@ -61,7 +61,7 @@ ErrorClass classifyPixel(const FloatImage& technique, const FloatImage& referenc
     if (edge) return ErrorClass::ReflectorEdge;
     if (disocclusion) return ErrorClass::DisocclusionEdge;
     if (seam) return ErrorClass::SilhouetteSeam;
-    if (!referencePath.empty() && referencePath[i * 2 + 1] == gpu::kPlanarParallelShape) return ErrorClass::ParallelShape;
+    if (!referencePath.empty() && (uint32_t(referencePath[i * 2 + 1]) & gpu::kPlanarParallelShape) != 0u) return ErrorClass::ParallelShape;
     if (!technique.rgba.empty() && technique.rgba[i * 4 + 3] == gpu::kReflectionFilled) return ErrorClass::HoleFilled;
     return ErrorClass::Interior;
 }

@@ -1,5 +1,6 @@
 #include "techniques/ppr_technique.hpp"
 
+#include "common/reflected_path.hpp"
 #include "ppr_clear/ppr_clear_pass.hpp"
 #include "ppr_common/encoding.h"
 #include "ppr_reflect/ppr_reflect.h"
@@ -89,6 +90,7 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
     reflect.reflectorIds = f.gbuffer.reflector;
     reflect.depth = f.gbuffer.depth;
     reflect.normal = f.gbuffer.normal;
+    reflect.material = f.gbuffer.material;
     reflect.reflectors = binding.reflectors;
     reflect.tileSurvivors = scatter.tileSurvivors;
     reflect.tiles = &tiles;
@@ -98,7 +100,7 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
     reflect.environment = f.environment();
     // TAA's reflection history reprojects through the virtual point, which needs each pixel's path length.
     const bool taa = f.settings.taa.enabled && f.settings.view.debug == gpu::kDebugNone;
-    if (taa) reflect.distance = f.graph.createImage("ppr.distance", {f.in.extent.width, f.in.extent.height, VK_FORMAT_R32_SFLOAT, 1});
+    if (taa) reflect.distance = f.graph.createImage("ppr.distance", {f.in.extent.width, f.in.extent.height, passes::kReflectedPathFormat, 1});
     graph::ImageHandle distance;
     graph::ImageHandle reflection = reflect_.add(f.graph, f.in, reflect, &distance);
     // The debug views PPR draws over the whole screen are left as they are.

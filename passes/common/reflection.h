@@ -24,7 +24,17 @@ PPR_CONST(float, kFlatNormalCos, 0.99999f)
 // as a fraction of the smaller screen side.
 PPR_CONST(float, kEnvironmentEdgeFade, 0.03f)
 
+// Reflected-path images (kReflectedPathFormat, RG32F): every technique writes one under TAA, and the
+// planar reference's also feeds compare's error classes. x = length of the reflected path, eye →
+// reflector → reflected point (metres; 0 where it is unknown: sky, no reflection). y = an integer tag:
+// the reflected point's motion slot (gpu/scene_data.h, 0 = still) shifted by kPathSlotShift, so TAA
+// can carry a moving object's reflection back to where it was; its low bits are the planar
+// reference's classes (planar/planar.h).
+PPR_CONST(uint, kPathSlotShift, 1u)
+
 PPR_BEGIN
+PPR_INLINE float pathTag(uint motionSlot, uint classBits) { return float((motionSlot << kPathSlotShift) | classBits); }
+PPR_INLINE uint pathMotionSlot(float tag) { return uint(tag) >> kPathSlotShift; }
 // Reflectance of a reflective surface that no reflector rectangle covers (curved or rough, shaded by
 // a screen-space technique with one mirror ray): a single ray cannot stand for a wide glossy lobe, so
 // the mirror image fades as the surface gets rougher.

@@ -10,12 +10,11 @@ PPR_CONST(float, kPlanarVisibleTolerance, 0.01f)
 PPR_CONST(float, kPlanarVisibleTolerancePerMetre, 0.004f)
 
 // What the reference knows of each reflected point, for `ppr compare`'s error classes
-// (app/metrics/error_breakdown.hpp): planar.distance, RG32F per pixel, x = length of the reflected
-// path (eye → reflector → reflected point, metres; 0 where the reflection shows sky or no reflector),
-// y = kPlanarParallelShape bits.
+// (app/metrics/error_breakdown.hpp): planar.distance, a reflected-path image (common/reflection.h):
+// x = length of the reflected path, y = a tag whose class bits are kPlanarParallelShape.
 // The reflected point also lies above a nearer parallel reflector that reflects it to the eye: PPR
 // writes a point into the nearest such shape only, so this pixel has to come from hole filling.
-PPR_CONST(float, kPlanarParallelShape, 1.0f)
+PPR_CONST(uint, kPlanarParallelShape, 1u)
 
 PPR_BEGIN
 struct PlanarResolvePush {

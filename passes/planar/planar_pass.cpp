@@ -61,6 +61,7 @@ PlanarOutputs PlanarPass::add(graph::RenderGraph& g, const FrameInputs& in, cons
             .hostStorage(reflectors.data)
             .storageReadWrite(reflection, &reflection)
             .storageReadWrite(out.path, &out.path)
+            .sampled(mirrored.material, in.samplers->nearestClamp)
             .push(push)
             .dispatch(in.extent, gpu::kPlanarGroupSize);
         if (!glass || glass->usedHeight == 0 || !(*glass->planeGroups)[v.planeGroup]) continue;

@@ -4,6 +4,7 @@
 // (engine/scene/mirror.hpp), then resolved onto the group's reflector pixels. Exact for mirrors;
 // costs a full scene render per plane, which is why it is the reference and not a technique to ship.
 #include "common/frame_inputs.hpp"
+#include "common/reflected_path.hpp"
 #include "gbuffer/gbuffer_pass.hpp"
 #include "lighting/lighting_pass.hpp"
 
@@ -40,7 +41,7 @@ public:
     // Views may be empty (nothing visible). With `glass`, also resolves the glass panels' regions.
     PlanarOutputs add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::ImageHandle shadowMap,
                       const std::vector<PlanarView>& views, PlanarReflectors reflectors, const PlanarGlass* glass = nullptr) const;
-    static constexpr VkFormat kPathFormat = VK_FORMAT_R32G32_SFLOAT;
+    static constexpr VkFormat kPathFormat = kReflectedPathFormat;
 
 private:
     const vk::Context& ctx_;

@@ -3,6 +3,7 @@
 #include "common/bindings.glsl"
 #include "common/reflection.h"
 #include "common/reflector_data.h"
+#include "gpu/scene_data.h"
 #include "planar/planar.h"
 
 // Planar ground truth, per plane group: copy the mirrored view's lit colour onto the pixels of the
@@ -19,9 +20,11 @@ layout(set = 0, binding = 7) uniform usampler2D reflectorTex;
 layout(set = 0, binding = 8, scalar) readonly buffer Reflectors { ReflectorData reflectors[]; };
 layout(set = 0, binding = 9, rgba16f) uniform image2D reflection;
 layout(set = 0, binding = 10, rg32f) uniform writeonly image2D reflectedPath;  // planar.h: planar.distance
+layout(set = 0, binding = 11) uniform sampler2D mirroredMaterial;  // alpha: the reflected point's motion slot
 layout(push_constant, scalar) uniform Push { PlanarResolvePush pc; };
 
 #include "planar/planar_visibility.glsl"
+#include "gbuffer/motion_slot.glsl"
 
 // Is the reflected point q, seen in reflector `self`, also reflected to the eye by a parallel shape
 // nearer to it (between q and self's plane)? See kPlanarParallelShape.
@@ -51,7 +54,8 @@ void main() {
     if (depth > 0.0) {
         vec4 p = mirrored.invViewProj * vec4(((vec2(pix) + 0.5) * frame.invScreenSize) * 2.0 - 1.0, depth, 1.0);
         vec3 q = p.xyz / p.w;
-        path = vec2(distance(q, mirrored.cameraPos.xyz), nearerParallelShape(q, id - 1u) ? kPlanarParallelShape : 0.0);
+        path = vec2(distance(q, mirrored.cameraPos.xyz), pathTag(motionSlotOf(texelFetch(mirroredMaterial, pix, 0)),
+                                                                  nearerParallelShape(q, id - 1u) ? kPlanarParallelShape : 0u));
     }
     imageStore(reflectedPath, pix, vec4(path, 0.0, 0.0));
 }

@@ -4,6 +4,7 @@
 #include "common/brdf.glsl"
 #include "common/reflection.h"
 #include "common/reflector_data.h"
+#include "gpu/scene_data.h"
 #include "ppr_common/encoding.h"
 #include "ppr_common/tiles.h"
 #include "ppr_reflect/ppr_reflect.h"
@@ -25,15 +26,18 @@ layout(set = 0, binding = 9) uniform sampler2D normalTex;  // G-buffer normal (n
 layout(set = 0, binding = 10, scalar) readonly buffer Reflectors { ReflectorData reflectors[]; };
 layout(push_constant, scalar) uniform Push { PprReflectPush pc; };
 #define ENV_BINDING 11  // the probe's data and cube (11, 12)
-layout(set = 0, binding = 13, r32f) uniform writeonly image2D outDistance;  // kPprWriteDistance
+layout(set = 0, binding = 13, rg32f) uniform writeonly image2D outDistance;  // kPprWriteDistance: common/reflection.h
+layout(set = 0, binding = 14) uniform sampler2D materialTex;  // G-buffer: alpha = motion slot (kPprWriteDistance)
+#include "gbuffer/motion_slot.glsl"
 
-// TAA's reflection history: the length of the path eye → this pixel's surface → the reflected point
-// seen at screen position `seen` (pixels).
+// TAA's reflection history: the path eye → this pixel's surface → the reflected point seen at screen
+// position `seen` (pixels), with that point's motion slot.
 void storeDistance(ivec2 pix, vec2 seen) {
     ivec2 seenPix = clamp(ivec2(seen), ivec2(0), ivec2(frame.screenSize) - 1);
     vec3 surface = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, texelFetch(depthTex, pix, 0).r);
     vec3 reflected = worldFromDepth((vec2(seenPix) + 0.5) * frame.invScreenSize, texelFetch(depthTex, seenPix, 0).r);
-    imageStore(outDistance, pix, vec4(length(surface - frame.cameraPos.xyz) + length(reflected - surface)));
+    imageStore(outDistance, pix, vec4(length(surface - frame.cameraPos.xyz) + length(reflected - surface),
+                                      pathTag(motionSlotOf(texelFetch(materialTex, seenPix, 0)), 0u), 0.0, 0.0));
 }
 
 uint fetchValue(ivec2 p) {

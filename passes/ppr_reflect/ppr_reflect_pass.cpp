@@ -1,6 +1,7 @@
 #include "ppr_reflect/ppr_reflect_pass.hpp"
 
 #include "common/clear_pass.hpp"
+#include "common/reflected_path.hpp"
 #include "common/compute_pass.hpp"
 #include "common/frame.h"
 #include "env_probe/env_probe.h"
@@ -55,7 +56,8 @@ graph::ImageHandle PprReflectPass::add(graph::RenderGraph& g, const FrameInputs&
     graph::ImageHandle distanceWritten;
     // Cleared first and kept where the shader does not write (tiles outside the indirect dispatch).
     if (writeDistance) pass.storageReadWrite(addClearPass(g, in, "ppr.distance.clear", *inputs.distance, VkClearColorValue{}), &distanceWritten);
-    else pass.storageWrite(g.createImage("ppr.distance.unused", {1, 1, VK_FORMAT_R32_SFLOAT, 1}), &distanceWritten);
+    else pass.storageWrite(g.createImage("ppr.distance.unused", {1, 1, kReflectedPathFormat, 1}), &distanceWritten);
+    pass.sampled(inputs.material, in.samplers->nearestClamp);  // binding 14
     pass.push(push);
     if (indirect) pass.dispatchIndirect(inputs.tiles->args, sizeof(gpu::TileDispatchArgs) * gpu::kTileClassPlanar);
     else pass.dispatch(in.extent, gpu::kPprTileSize);

@@ -14,6 +14,7 @@ struct PprReflectInputs {
     graph::ImageHandle sceneColor;
     graph::ImageHandle reflectorIds;
     graph::ImageHandle depth, normal;         // G-buffer (normal maps, the environment's reflected ray)
+    graph::ImageHandle material;              // G-buffer: the reflected points' motion slots (kPprWriteDistance)
     VkBuffer reflectors = VK_NULL_HANDLE;     // ReflectorData[] (plane normals)
     graph::BufferHandle tileSurvivors;  // ppr.project's per-tile counts (debug=tiles)
     const TileLists* tiles = nullptr;
@@ -21,8 +22,9 @@ struct PprReflectInputs {
     uint32_t debugView = 0;       // frame.h kDebug* (intermediate, holes and tiles draw here)
     uint32_t maxReflectorId = 0;  // ids above this get no reflection (beyond PPR's budget)
     Environment environment;      // what holes show with kPprEnvironment (the probe adds kPprEnvironmentProbe)
-    // kPprWriteDistance: the image (R32F, screen-sized, cleared to 0 by add()) that receives the length
-    // of each reflector pixel's reflected path; add() returns it written in `distanceOut`.
+    // kPprWriteDistance: the reflected-path image (common/reflection.h, screen-sized, cleared to 0 by
+    // add()) that receives each reflector pixel's path length and motion slot; add() returns it
+    // written in `distanceOut`.
     std::optional<graph::ImageHandle> distance;
 };
 

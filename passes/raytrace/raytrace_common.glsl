@@ -266,8 +266,10 @@ bool passesAlphaMask(uint draw, uint prim, vec2 bary) {
     return alpha >= m.alphaCutoff;
 }
 
-// The distance from `origin` to the last traceReflection()'s hit, 0 when it hit nothing (the sky).
+// The distance from `origin` to the last traceReflection()'s hit, 0 when it hit nothing (the sky), and
+// the hit draw's motion slot (0: still, or nothing hit).
 float traceHitT = 0.0;
+uint traceHitSlot = 0u;
 
 // The reflection seen along `dir` from `origin` (see shadeHit): the ray query's committed hit, shaded.
 vec4 traceReflection(ReflectorData plane, vec3 n, ivec2 pix, vec3 origin, vec3 dir, float eyeDistance) {
@@ -280,8 +282,10 @@ vec4 traceReflection(ReflectorData plane, vec3 n, ivec2 pix, vec3 origin, vec3 d
             rayQueryConfirmIntersectionEXT(query);
     }
     traceHitT = 0.0;
+    traceHitSlot = 0u;
     if (rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionTriangleEXT) return skyReflection(dir);
     traceHitT = rayQueryGetIntersectionTEXT(query, true);
+    traceHitSlot = draws[rayQueryGetIntersectionInstanceCustomIndexEXT(query, true)].motionSlot;
     vec2 bary = rayQueryGetIntersectionBarycentricsEXT(query, true);
     return shadeHit(plane, n, pix, origin, dir, eyeDistance, uint(rayQueryGetIntersectionInstanceCustomIndexEXT(query, true)),
                     uint(rayQueryGetIntersectionPrimitiveIndexEXT(query, true)), rayQueryGetIntersectionTEXT(query, true),

@@ -1,6 +1,7 @@
 #include "raytrace/raytrace_pass.hpp"
 
 #include "common/clear_pass.hpp"
+#include "common/reflected_path.hpp"
 #include "raytrace/raytrace.h"
 #include "raytrace_glass_comp.h"
 #include "raytrace_reflect_comp.h"
@@ -49,7 +50,7 @@ graph::ImageHandle RaytracePass::addScreen(graph::RenderGraph& g, const FrameInp
     // Path lengths only when asked for (TAA); otherwise a 1×1 stand-in the shader never writes.
     const VkExtent2D distanceSize = distanceOut ? in.extent : VkExtent2D{1, 1};
     const graph::ImageHandle distance =
-        g.createImage(distanceOut ? "raytraced.distance" : "raytraced.distance.unused", {distanceSize.width, distanceSize.height, VK_FORMAT_R32_SFLOAT, 1});
+        g.createImage(distanceOut ? "raytraced.distance" : "raytraced.distance.unused", {distanceSize.width, distanceSize.height, kReflectedPathFormat, 1});
     gpu::RaytracePush push{};
     push.flags = (normalMapped ? gpu::kRaytraceNormalMapped : 0u) | (distanceOut ? gpu::kRaytraceWriteDistance : 0u);
     push.looseCount = in.looseCount;

@@ -10,7 +10,7 @@ layout(local_size_x = kRaytraceGroupSize, local_size_y = kRaytraceGroupSize) in;
 layout(set = 0, binding = 11) uniform sampler2D normalTex;
 layout(set = 0, binding = 12) uniform usampler2D reflectorTex;
 layout(set = 0, binding = 13, rgba16f) uniform writeonly image2D reflection;
-layout(set = 0, binding = 14, r32f) uniform writeonly image2D pathLength;  // kRaytraceWriteDistance: eye → reflector → hit
+layout(set = 0, binding = 14, rg32f) uniform writeonly image2D pathLength;  // kRaytraceWriteDistance: common/reflection.h, eye → reflector → hit
 
 // The mirror ray of reflector pixel `pix` (reflector index + 1 `id`), false when the planar
 // reference has no reflection there (the camera sees the plane from behind, or the pixel's eye ray
@@ -46,12 +46,12 @@ void main() {
     vec4 result = vec4(0.0, 0.0, 0.0, kReflectionNone);
     ReflectorData r;
     vec3 n, origin, dir;
-    float path = 0.0;
+    vec2 path = vec2(0.0);  // reflected-path image (common/reflection.h): length, the hit's motion slot
     if (id != 0u && reflectorRay(pix, id, r, n, origin, dir)) {
         float eyeDistance = distance(frame.cameraPos.xyz, origin);
         result = traceReflection(r, n, pix, origin, dir, eyeDistance);
-        if (traceHitT > 0.0) path = eyeDistance + traceHitT;
+        if (traceHitT > 0.0) path = vec2(eyeDistance + traceHitT, pathTag(traceHitSlot, 0u));
     }
     imageStore(reflection, pix, result);
-    if ((pc.flags & kRaytraceWriteDistance) != 0u) imageStore(pathLength, pix, vec4(path));
+    if ((pc.flags & kRaytraceWriteDistance) != 0u) imageStore(pathLength, pix, vec4(path, 0.0, 0.0));
 }

@@ -8,6 +8,7 @@
 #include "common/brdf.glsl"
 #include "common/reflection.h"
 #include "common/reflector_data.h"
+#include "gpu/scene_data.h"
 #include "ppr_common/tiles.h"
 #include "ssr_common/ssr.h"
 
@@ -20,13 +21,14 @@ layout(set = 0, binding = 5) uniform sampler2D sceneColor;  // lit scene, biline
 layout(set = 0, binding = 6, scalar) readonly buffer Reflectors { ReflectorData reflectors[]; };
 layout(set = 0, binding = 7, scalar) readonly buffer TileLists { uint tileLists[]; };
 layout(set = 0, binding = 8, rgba16f) uniform image2D outReflection;
-layout(set = 0, binding = 9, r32f) uniform writeonly image2D outDistance;  // kSsrWriteDistance
+layout(set = 0, binding = 9, rg32f) uniform writeonly image2D outDistance;  // kSsrWriteDistance: common/reflection.h
 #ifdef SSR_USES_HIZ
 layout(set = 0, binding = 12, r32f) uniform readonly image2D hizAtlas;
 #endif
 layout(push_constant, scalar) uniform Push { SsrPush pc; };
 #define ENV_BINDING 10  // the probe's data and cube (10, 11)
 #include "common/environment.glsl"
+#include "gbuffer/motion_slot.glsl"
 
 bool environmentUsesProbe() { return (pc.flags & kSsrEnvironmentProbe) != 0u; }
 
@@ -134,7 +136,7 @@ void main() {
         return;
     }
     vec4 result = vec4(0.0);
-    float path = 0.0;  // eye → surface → reflected point, 0 = none
+    vec2 path = vec2(0.0);  // reflected-path image (common/reflection.h): eye → surface → reflected point, 0 = none
     float depth = texelFetch(depthTex, pix, 0).r;
     SsrRay ray;
     vec2 hit;
@@ -143,13 +145,14 @@ void main() {
         if (ssrTrace(ray, hit)) {
             vec3 c = textureLod(sceneColor, hit * frame.invScreenSize, 0.0).rgb;
             result = vec4(env ? environmentBlend(c, hit, ray.worldOrigin, ray.worldDir) : c, kReflectionHit);
-            // The reflected point is the surface seen at the hit pixel.
+            // The reflected point is the surface seen at the hit pixel, moving with that pixel's draw.
             vec3 reflected = worldFromDepth(hit * frame.invScreenSize, texelFetch(depthTex, ivec2(hit), 0).r);
-            path = distance(frame.cameraPos.xyz, ray.worldOrigin) + distance(ray.worldOrigin, reflected);
+            path = vec2(distance(frame.cameraPos.xyz, ray.worldOrigin) + distance(ray.worldOrigin, reflected),
+                        pathTag(motionSlotOf(texelFetch(materialTex, ivec2(hit), 0)), 0u));
         } else if (env) {
             result = vec4(environmentRadiance(ray.worldOrigin, ray.worldDir), kReflectionEnvironment);
         }
     }
     imageStore(outReflection, pix, result);
-    if (writeDistance) imageStore(outDistance, pix, vec4(path));
+    if (writeDistance) imageStore(outDistance, pix, vec4(path, 0.0, 0.0));
 }

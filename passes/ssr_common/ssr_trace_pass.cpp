@@ -1,6 +1,7 @@
 #include "ssr_common/ssr_trace_pass.hpp"
 
 #include "common/clear_pass.hpp"
+#include "common/reflected_path.hpp"
 #include "common/compute_pass.hpp"
 #include "env_probe/env_probe.h"
 #include "ppr_common/tiles.h"
@@ -51,7 +52,7 @@ graph::ImageHandle SsrTracePass::trace(graph::RenderGraph& g, const FrameInputs&
     if (fresh && !listClass) pass.storageWrite(target, &out);
     else pass.storageReadWrite(target, &out);
     // Path lengths beside it, written the same way; without them a 1×1 stand-in the shader never writes.
-    if (!distance) pass.storageWrite(g.createImage(passName + ".distance.unused", {1, 1, VK_FORMAT_R32_SFLOAT, 1}), nullptr);
+    if (!distance) pass.storageWrite(g.createImage(passName + ".distance.unused", {1, 1, kReflectedPathFormat, 1}), nullptr);
     else if (fresh && !listClass) pass.storageWrite(*distance, distance);
     else pass.storageReadWrite(*distance, distance);
     pass.uniform(inputs.environment.probeData, 0, sizeof(gpu::EnvProbeData)).sampled(inputs.environment.probeCube, in.samplers->linearClamp);
@@ -65,7 +66,7 @@ graph::ImageHandle SsrTracePass::trace(graph::RenderGraph& g, const FrameInputs&
 graph::ImageHandle SsrTracePass::addTechnique(graph::RenderGraph& g, const FrameInputs& in, const SsrInputs& inputs,
                                               graph::ImageHandle* distanceOut) const {
     graph::ImageHandle image = g.createImage("reflection", {in.extent.width, in.extent.height, kReflectionFormat, 1});
-    if (distanceOut) *distanceOut = g.createImage(name_ + ".distance", {in.extent.width, in.extent.height, VK_FORMAT_R32_SFLOAT, 1});
+    if (distanceOut) *distanceOut = g.createImage(name_ + ".distance", {in.extent.width, in.extent.height, kReflectedPathFormat, 1});
     const uint32_t all = (1u << gpu::kTileClassPlanar) | (1u << gpu::kTileClassOther);
     if (!inputs.indirect) return trace(g, in, inputs, image, name_, all, std::nullopt, true, distanceOut);
     // Tiles in neither list hold no reflective pixel: "no reflection" (all zero), as the whole-screen

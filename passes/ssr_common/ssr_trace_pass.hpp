@@ -42,8 +42,8 @@ public:
     // The technique on its own: a new reflection image (common/reflection.h) with every reflective
     // pixel shaded. Indirect: "<name>.clear", then "<name>.planar" and "<name>.other" over the two
     // tile lists; otherwise one whole-screen pass "<name>".
-    // `distanceOut`: also a new R32F image of each pixel's reflected path length (eye → surface → the
-    // point seen at the hit; 0 = none), for TAA's virtual point.
+    // `distanceOut`: also a new reflected-path image (common/reflection.h: the path eye → surface → the
+    // point seen at the hit, 0 = none, and that point's motion slot), for TAA's virtual point.
     graph::ImageHandle addTechnique(graph::RenderGraph& g, const FrameInputs& in, const SsrInputs& inputs,
                                     graph::ImageHandle* distanceOut = nullptr) const;
     // Shades only reflective pixels that no reflector rectangle covers into `reflection` (read-write),

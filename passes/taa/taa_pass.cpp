@@ -34,6 +34,7 @@ graph::ImageHandle TaaPass::addReflection(graph::RenderGraph& g, const FrameInpu
         .sampled(h.previous, in.samplers->linearClamp)
         .storageWrite(g.createImage("taa.reflection.shown", {in.extent.width, in.extent.height, kHistoryFormat, 1}), &shown)
         .storageWrite(h.current, &written)
+        .hostStorage(in.motion)  // a moving reflected point's motion slot (the path image's tag)
         .push(push)
         .dispatch(in.extent, gpu::kTaaGroupSize);
     return shown;

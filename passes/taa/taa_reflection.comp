@@ -5,8 +5,11 @@
 // The history's alpha holds the view depth of each pixel's virtual point (the reflected point mirrored
 // through the reflector, on the pixel's view ray at the reflected path's length), so that `virtual`
 // can tell a disoccluded history from its own, as a depth-history reprojection would.
+// A reflected point on a moving draw (its motion slot in the path image's tag) is carried back to
+// where that draw was last frame before it is mirrored, so a moving object's reflection follows it.
 #include "common/bindings.glsl"
 #include "common/reflection.h"
+#include "gpu/scene_data.h"
 #include "taa/taa.h"
 #include "taa/taa_color.glsl"
 #include "taa/taa_motion.glsl"
@@ -15,10 +18,11 @@ layout(local_size_x = kTaaGroupSize, local_size_y = kTaaGroupSize) in;
 layout(set = 0, binding = 1) uniform sampler2D reflectionTex;  // common/reflection.h, nearest
 layout(set = 0, binding = 2) uniform sampler2D depthTex;
 layout(set = 0, binding = 3) uniform sampler2D normalTex;
-layout(set = 0, binding = 4) uniform sampler2D distanceTex;    // reflected path length in x (0 = unknown)
+layout(set = 0, binding = 4) uniform sampler2D distanceTex;    // reflected-path image (common/reflection.h)
 layout(set = 0, binding = 5) uniform sampler2D historyTex;     // linear, clamped
 layout(set = 0, binding = 6, rgba16f) uniform writeonly image2D outShown;
 layout(set = 0, binding = 7, rgba16f) uniform writeonly image2D outHistory;
+layout(set = 0, binding = 8, scalar) readonly buffer Motions { MotionData motions[]; };
 layout(push_constant, scalar) uniform Push { TaaReflectionPush pc; };
 
 // A history texel with alpha below this had no reflection, or one of unknown depth.
@@ -54,23 +58,30 @@ void main() {
     float depth = texelFetch(depthTex, pix, 0).r;
     float prevW;
     vec2 historyUv = previousUv(uv, depth, prevW);
-    float dist = pc.hasDistance != 0u ? texelFetch(distanceTex, pix, 0).x : 0.0;
+    vec2 path = pc.hasDistance != 0u ? texelFetch(distanceTex, pix, 0).xy : vec2(0.0);
+    float dist = path.x;
+    uint slot = pathMotionSlot(path.y);
     vec3 surface = worldFromDepth(uv, depth);
     vec3 view = normalize(surface - frame.cameraPos.xyz);
     vec4 virtualPoint = vec4(frame.cameraPos.xyz + view * dist, 1.0);
+    // The reflected point: the virtual point mirrored back through the surface's tangent plane.
+    vec3 n = normalize(texelFetch(normalTex, pix, 0).xyz);
+    vec3 reflected = surface + reflect(view, n) * max(dist - length(surface - frame.cameraPos.xyz), 0.0);
+    vec3 reflectedBefore = slot == 0u ? reflected : (motions[slot].toPrevious * vec4(reflected, 1.0)).xyz;
     float expectedW = 0.0;  // virtual: the view depth last frame's history should hold there
     if (dist > 0.0 && pc.mode == kReprojectVirtual) {
-        historyUv = previousUvOfPoint(uv, virtualPoint, prevW);
+        // The virtual point moves by the reflected point's own motion mirrored through the tangent plane
+        // (written as a displacement so that a still object's adds exactly nothing).
+        vec3 moved = reflectedBefore - reflected;
+        historyUv = previousUvOfPoint(uv, virtualPoint + vec4(moved - 2.0 * dot(moved, n) * n, 0.0), prevW);
         expectedW = prevW;
     } else if (dist > 0.0 && pc.mode == kReprojectCandidates) {
         // The seed note's candidates: the motion at the incidence (the surface) and at the intersection
         // (the reflected point, where it is seen on screen), each also parallax-scaled; the smallest wins.
-        vec3 n = normalize(texelFetch(normalTex, pix, 0).xyz);
-        vec3 reflected = surface + reflect(view, n) * max(dist - length(surface - frame.cameraPos.xyz), 0.0);
         vec4 clip = frame.viewProj * vec4(reflected, 1.0);
         vec2 reflectedUv = clip.xy / clip.w * 0.5 + 0.5;
         float reflectedW;
-        vec2 atIntersection = previousUvOfPoint(reflectedUv, vec4(reflected, 1.0), reflectedW) - reflectedUv;
+        vec2 atIntersection = previousUvOfPoint(reflectedUv, vec4(reflectedBefore, 1.0), reflectedW) - reflectedUv;
         vec2 atIncidence = historyUv - uv;
         float parallax = clamp(1.0 - dist * kTaaParallaxPerMetre, 0.0, 1.0);
         vec2 best = atIncidence;

@@ -49,7 +49,8 @@ TEST(ErrorBreakdown, ClassesFollowTheReferenceInPrecedenceOrder) {
     setAlpha(ref, 5, 0, ppr::gpu::kReflectionOffscreen);  // a hidden reflected point: its neighbours are disocclusion edges
     std::vector<float> p = paths(10.0f);
     for (uint32_t y = 0; y < kH; ++y) p[at(7, y) * 2] = 20.0f;  // a far surface behind column 7: seams at 6 and 7
-    p[at(3, 4) * 2 + 1] = ppr::gpu::kPlanarParallelShape;
+    p[at(3, 4) * 2 + 1] = ppr::gpu::pathTag(7u, ppr::gpu::kPlanarParallelShape);  // of a moving object
+    p[at(3, 2) * 2 + 1] = ppr::gpu::pathTag(7u, 0u);  // a moving object's point alone is no class
     setAlpha(tech, 3, 5, ppr::gpu::kReflectionFilled);
 
     EXPECT_EQ(classifyPixel(tech, ref, p, at(0, 0)), ErrorClass::ReflectorEdge);  // the image border
