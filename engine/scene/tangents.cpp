@@ -20,8 +20,10 @@ void generateFlatNormals(std::vector<Vertex>& vertices, std::vector<uint32_t>& i
         glm::vec3 n = glm::cross(v[1].position - v[0].position, v[2].position - v[0].position);
         // Scaled to its largest component first: a tiny triangle's squared length is subnormal (or 0),
         // and dividing by its imprecise root gives a normal percent off unit length (found by fuzz_gltf).
+        // An overflowing one (inf − inf is NaN, which max() may skip) is degenerate too.
         const float largest = glm::max(glm::abs(n.x), glm::max(glm::abs(n.y), glm::abs(n.z)));
-        n = (largest > 0.0f && std::isfinite(largest)) ? glm::normalize(n / largest) : glm::vec3(0, 1, 0);  // degenerate triangle
+        const bool usable = largest > 0.0f && std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z);
+        n = usable ? glm::normalize(n / largest) : glm::vec3(0, 1, 0);  // degenerate triangle
         for (auto& x : v) {
             x.normal = n;
             flat.push_back(x);

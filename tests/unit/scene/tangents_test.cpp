@@ -86,3 +86,14 @@ TEST(Tangents, FlatNormalOfATinyTriangleIsUnit) {
         EXPECT_NEAR(vs[0].normal.y, 1.0f, 1e-6f);
     }
 }
+
+// Edges so long that the cross product overflows (inf − inf: NaN components) count as degenerate.
+TEST(Tangents, FlatNormalOfAnOverflowingTriangleFallsBack) {
+    std::vector<Vertex> vs = {vert({0, 0, 0}, {0, 0}), vert({1e30f, 1e30f, 0}, {1, 0}), vert({1e30f, 1e30f, 1}, {0, 1})};  // z: inf − inf
+    std::vector<uint32_t> idx = {0, 1, 2};
+    detail::generateFlatNormals(vs, idx);
+    for (const Vertex& v : vs) {
+        EXPECT_TRUE(std::isfinite(v.normal.x) && std::isfinite(v.normal.y) && std::isfinite(v.normal.z));
+        EXPECT_NEAR(glm::length(v.normal), 1.0f, 1e-6f);
+    }
+}
