@@ -182,7 +182,12 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
         hdr = glassForward_->add(g, in, hdr, gb.depth, frame.reflectorData(), glassReflection, &glassOrder_);
         if (glass && settings.view.debug == gpu::kDebugAtlas) hdr = glassReflect_->addAtlasView(g, in, glass->atlas, hdr);
     }
-    if (taa) hdr = taa_->add(g, in, executor_->history(), hdr, gb.depth, gb.material);
+    if (taa) {
+        passes::TaaInputs t{hdr, gb.depth, gb.material, std::nullopt};
+        const ReflectionDistance* path = board.find<ReflectionDistance>();
+        if (path && settings.taa.reproject == Reproject::Virtual) t.reflectedPath = path->image;
+        hdr = taa_->add(g, in, executor_->history(), t);
+    }
     board.put(HdrColor{hdr});
     runTaps(req, TapPoint::AfterGlass, taps);
 

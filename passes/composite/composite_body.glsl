@@ -33,6 +33,9 @@ void main() {
     if (any(greaterThanEqual(pix, ivec2(frame.screenSize)))) return;
     vec3 c = texelFetch(sceneColor, pix, 0).rgb;
     uint id = texelFetch(reflectorTex, pix, 0).r;
+    // Written to alpha (which nothing else reads): how much of the colour is the reflection, by which
+    // the frame's TAA mixes a history fetched with the reflection's motion into the surface's.
+    float reflectionWeight = 0.0;
 #ifdef PPR_COMPOSITE_REFLECTION
     vec4 reflection = texelFetch(reflectionTex, pix, 0);
     vec4 material = texelFetch(materialTex, pix, 0);
@@ -49,6 +52,7 @@ void main() {
         float reflectance = id != 0u ? reflectors[id - 1u].reflectance : surfaceReflectance(material.r);
         vec3 weight = fresnelSchlick(nv, mix(vec3(0.04), albedo, metallic)) * reflectance;
         c = mix(c, reflection.rgb, weight);
+        reflectionWeight = (weight.r + weight.g + weight.b) / 3.0;
     }
 #endif
     uint view = frame.debugView;
@@ -76,5 +80,5 @@ void main() {
 #endif
     // Debug views are shown without tonemapping curves distorting them too much: divide by exposure.
     if (view != kDebugNone && view != kDebugReflectors) c /= max(frame.lightColor.w, 1e-4);
-    imageStore(outColor, pix, vec4(c, 1.0));
+    imageStore(outColor, pix, vec4(c, reflectionWeight));
 }

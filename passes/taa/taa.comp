@@ -1,8 +1,12 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // TAA resolve: the current (jittered) HDR frame blended with last frame's resolved image, fetched where
-// this pixel's surface was then. Writes the new history, which is also the frame's output.
+// this pixel's surface was then. A reflector pixel's colour is partly its reflection, which moved with
+// its virtual point, not with the surface: with `reflectionMotion` its history is the mix, by the
+// composite's reflection weight (the current colour's alpha), of the fetch at the surface's motion and
+// the fetch at the reflection's. Writes the new history, which is also the frame's output.
 #include "common/bindings.glsl"
+#include "common/reflection.h"
 #include "gpu/scene_data.h"
 #include "taa/taa.h"
 #include "taa/taa_color.glsl"
@@ -14,21 +18,27 @@ layout(set = 0, binding = 3) uniform sampler2D historyColor;  // linear, clamped
 layout(set = 0, binding = 4, rgba16f) uniform writeonly image2D outColor;
 layout(set = 0, binding = 5) uniform sampler2D materialTex;  // G-buffer: alpha = motion slot
 layout(set = 0, binding = 6, scalar) readonly buffer Motions { MotionData motions[]; };
+layout(set = 0, binding = 7) uniform sampler2D pathTex;  // the technique's reflected-path image (reflectionMotion)
 #include "taa/taa_motion.glsl"
 #include "taa/object_motion.glsl"
+#include "taa/reflection_motion.glsl"
 layout(push_constant, scalar) uniform Push { TaaPush pc; };
 
 // The group's pixels and a one-pixel border, loaded once: each pixel reads its 3×3 neighbourhood from
-// here instead of nine colour and nine depth fetches. xyz: compressed YCoCg colour, w: depth.
+// here instead of nine colour and nine depth fetches. xyz: compressed YCoCg colour, w: depth; and the
+// colour's alpha, the composite's reflection weight.
 const int kTile = int(kTaaGroupSize) + 2;
 shared vec4 tile[kTile * kTile];
+shared float tileReflectionWeight[kTile * kTile];
 
 void main() {
     ivec2 size = ivec2(frame.screenSize);
     ivec2 origin = ivec2(gl_WorkGroupID.xy) * int(kTaaGroupSize) - 1;
     for (uint i = gl_LocalInvocationIndex; i < uint(kTile * kTile); i += kTaaGroupSize * kTaaGroupSize) {
         ivec2 q = clamp(origin + ivec2(int(i) % kTile, int(i) / kTile), ivec2(0), size - 1);
-        tile[i] = vec4(toYCoCg(compress(texelFetch(currentColor, q, 0).rgb)), texelFetch(depthTex, q, 0).r);
+        vec4 c = texelFetch(currentColor, q, 0);
+        tile[i] = vec4(toYCoCg(compress(c.rgb)), texelFetch(depthTex, q, 0).r);
+        tileReflectionWeight[i] = c.a;
     }
     barrier();
     ivec2 pix = ivec2(gl_GlobalInvocationID.xy);
@@ -55,11 +65,34 @@ void main() {
     float prevW;
     uint slot = motionSlotAt(clamp(pix + nearest, ivec2(0), size - 1));
     vec2 historyUv = previousUvMoving((vec2(pix) + 0.5) * frame.invScreenSize, nearestDepth, slot, prevW);
+    float reflectionWeight = 0.0;  // 0: the surface's fetch alone
+    vec2 reflectionUv;
+    if (pc.reflectionMotion != 0u) {
+        float w = tileReflectionWeight[local.y * kTile + local.x];
+        vec2 path = w > 0.0 ? texelFetch(pathTex, pix, 0).xy : vec2(0.0);
+        // Only a still reflected point: for a moving one, the mix measured worse than the surface's
+        // fetch alone (docs/temporal.md), and the reflection's own history already follows it.
+        if (path.x > 0.0 && pathMotionSlot(path.y) == 0u) {
+            vec2 uv = (vec2(pix) + 0.5) * frame.invScreenSize;
+            vec3 surface = worldFromDepth(uv, texelFetch(depthTex, pix, 0).r);
+            vec3 view = normalize(surface - frame.cameraPos.xyz);
+            float reflectionW;  // a still reflected point: the tangent plane (normal) plays no part
+            reflectionUv = previousUvOfReflection(uv, surface, view, vec3(0.0), path.x, 0u, reflectionW);
+            if (reflectionW > 0.0 && all(greaterThanEqual(reflectionUv, vec2(0.0))) && all(lessThanEqual(reflectionUv, vec2(1.0))))
+                reflectionWeight = w;
+        }
+    }
     bool onScreen = prevW > 0.0 && all(greaterThanEqual(historyUv, vec2(0.0))) && all(lessThanEqual(historyUv, vec2(1.0)));
 
     vec3 resolved = currentY;
     if (pc.historyValid != 0u && onScreen) {
-        vec3 history = toYCoCg(compress(sampleCatmullRom(historyColor, historyUv)));
+        vec3 historyRgb = sampleCatmullRom(historyColor, historyUv);
+        // Where both fetches coincide to rounding (1/1000 pixel: a still view) the mix is the surface's
+        // fetch. Not more: a slow camera's sub-pixel differences add up over the frames.
+        vec2 apart = (reflectionUv - historyUv) * frame.screenSize;
+        if (reflectionWeight > 0.0 && dot(apart, apart) > 1e-6)
+            historyRgb = mix(historyRgb, sampleCatmullRom(historyColor, reflectionUv), reflectionWeight);
+        vec3 history = toYCoCg(compress(historyRgb));
         history = clipToBox(history, mean, kTaaClipSigma * sigma + vec3(1e-4));
         resolved = mix(currentY, history, historyFeedback(currentY.x, history.x));
     }

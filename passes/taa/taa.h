@@ -35,7 +35,10 @@ PPR_SIZE_CHECK(TaaReflectionPush, 16);
 PPR_BEGIN
 struct TaaPush {
     uint historyValid;  // 0 on the first frame after creation or a reset: the output is the current frame
-    uint pad0, pad1, pad2;
+    // 1: reflector pixels also fetch history where their reflection was (reflection_motion.glsl), mixed
+    // in by the composite's reflection weight (reproject=virtual, a technique with reflected paths)
+    uint reflectionMotion;
+    uint pad1, pad2;
 };
 PPR_END
 PPR_SIZE_CHECK(TaaPush, 16);

@@ -40,20 +40,22 @@ graph::ImageHandle TaaPass::addReflection(graph::RenderGraph& g, const FrameInpu
     return shown;
 }
 
-graph::ImageHandle TaaPass::add(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history, graph::ImageHandle hdr,
-                                graph::ImageHandle depth, graph::ImageHandle material) const {
+graph::ImageHandle TaaPass::add(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history, const TaaInputs& inputs) const {
     const graph::HistoryImage h = g.history(history, kHistoryName, {in.extent.width, in.extent.height, kHistoryFormat, 1});
     gpu::TaaPush push{};
     push.historyValid = h.previousValid ? 1u : 0u;
+    push.reflectionMotion = inputs.reflectedPath ? 1u : 0u;
+    const VkSampler nearest = in.samplers->nearestClamp;
     graph::ImageHandle out;
     ComputePass(g, ctx_, "taa", pipeline_)
         .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
-        .sampled(hdr, in.samplers->nearestClamp)
-        .sampled(depth, in.samplers->nearestClamp)
+        .sampled(inputs.hdr, nearest)
+        .sampled(inputs.depth, nearest)
         .sampled(h.previous, in.samplers->linearClamp)
         .storageWrite(h.current, &out)
-        .sampled(material, in.samplers->nearestClamp)
+        .sampled(inputs.material, nearest)
         .hostStorage(in.motion)
+        .sampled(inputs.reflectedPath.value_or(inputs.depth), nearest)  // unread without one (reflectionMotion 0)
         .push(push)
         .dispatch(in.extent, gpu::kTaaGroupSize);
     return out;

@@ -16,6 +16,14 @@ struct TaaReflectionInputs {
     uint32_t mode = 0;                           // taa.h kReproject*
 };
 
+struct TaaInputs {
+    graph::ImageHandle hdr;                     // the composited frame; alpha = its reflection weight
+    graph::ImageHandle depth, material;         // G-buffer (material alpha: a moving draw's motion slot)
+    // The technique's reflected-path image, when reflector pixels should also fetch their history
+    // where their reflection was (reproject=virtual); without it, the surface's motion alone.
+    std::optional<graph::ImageHandle> reflectedPath;
+};
+
 class TaaPass {
 public:
     static constexpr const char* kHistoryName = "taa.color";
@@ -23,8 +31,7 @@ public:
     static constexpr VkFormat kHistoryFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 
     explicit TaaPass(const vk::Context& ctx);
-    graph::ImageHandle add(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history, graph::ImageHandle hdr,
-                           graph::ImageHandle depth, graph::ImageHandle material) const;
+    graph::ImageHandle add(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history, const TaaInputs& inputs) const;
     // The reflection's own history (taa_reflection.comp): returns the accumulated reflection image for
     // the composite (same class codes in alpha as the technique's).
     graph::ImageHandle addReflection(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history,

@@ -23,6 +23,7 @@ layout(set = 0, binding = 5) uniform sampler2D historyTex;     // linear, clampe
 layout(set = 0, binding = 6, rgba16f) uniform writeonly image2D outShown;
 layout(set = 0, binding = 7, rgba16f) uniform writeonly image2D outHistory;
 layout(set = 0, binding = 8, scalar) readonly buffer Motions { MotionData motions[]; };
+#include "taa/reflection_motion.glsl"
 layout(push_constant, scalar) uniform Push { TaaReflectionPush pc; };
 
 // A history texel with alpha below this had no reflection, or one of unknown depth.
@@ -64,20 +65,17 @@ void main() {
     vec3 surface = worldFromDepth(uv, depth);
     vec3 view = normalize(surface - frame.cameraPos.xyz);
     vec4 virtualPoint = vec4(frame.cameraPos.xyz + view * dist, 1.0);
-    // The reflected point: the virtual point mirrored back through the surface's tangent plane.
     vec3 n = normalize(texelFetch(normalTex, pix, 0).xyz);
-    vec3 reflected = surface + reflect(view, n) * max(dist - length(surface - frame.cameraPos.xyz), 0.0);
-    vec3 reflectedBefore = slot == 0u ? reflected : (motions[slot].toPrevious * vec4(reflected, 1.0)).xyz;
     float expectedW = 0.0;  // virtual: the view depth last frame's history should hold there
     if (dist > 0.0 && pc.mode == kReprojectVirtual) {
-        // The virtual point moves by the reflected point's own motion mirrored through the tangent plane
-        // (written as a displacement so that a still object's adds exactly nothing).
-        vec3 moved = reflectedBefore - reflected;
-        historyUv = previousUvOfPoint(uv, virtualPoint + vec4(moved - 2.0 * dot(moved, n) * n, 0.0), prevW);
+        historyUv = previousUvOfReflection(uv, surface, view, n, dist, slot, prevW);
         expectedW = prevW;
     } else if (dist > 0.0 && pc.mode == kReprojectCandidates) {
         // The seed note's candidates: the motion at the incidence (the surface) and at the intersection
-        // (the reflected point, where it is seen on screen), each also parallax-scaled; the smallest wins.
+        // (the reflected point, where it is seen on screen, moved with its draw), each also
+        // parallax-scaled; the smallest wins.
+        vec3 reflected = surface + reflect(view, n) * max(dist - length(surface - frame.cameraPos.xyz), 0.0);
+        vec3 reflectedBefore = slot == 0u ? reflected : (motions[slot].toPrevious * vec4(reflected, 1.0)).xyz;
         vec4 clip = frame.viewProj * vec4(reflected, 1.0);
         vec2 reflectedUv = clip.xy / clip.w * 0.5 + 0.5;
         float reflectedW;

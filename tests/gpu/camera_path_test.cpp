@@ -93,6 +93,20 @@ TEST(CameraPathRun, RaytracedReflectionsReprojectThroughTheirVirtualPoint) {
     std::filesystem::remove_all(dir);
 }
 
+// The frame's TAA mixes a reflector pixel's history fetch at its reflection's motion in by the
+// composite's reflection weight (reproject=virtual): on the wall mirror, whose colour is mostly its
+// reflection, that is most of what virtual gains over surface under a strafe. Measured on lavapipe
+// at this size: +2.17 dB with the mix, +0.99 with the reflection's own history alone.
+TEST(CameraPathRun, FrameTaaFollowsTheReflectionOnAMirror) {
+    auto dir = tempDir("path-mirror");
+    const nlohmann::json m = validatedCompare(dir, "--path strafe --frames 12 --camera mirror --size 160x90 "
+                                                   "--technique planar@taa=1,reproject=surface --technique planar@taa=1,reproject=virtual");
+    const double surface = reflectorDb(m, "planar@taa=1,reproject=surface"), virtualPoint = reflectorDb(m, "planar@taa=1,reproject=virtual");
+    std::printf("mirror, reflector pixels, strafe: surface %.2f dB, virtual %.2f dB\n", surface, virtualPoint);
+    EXPECT_GT(virtualPoint, surface + 1.6);
+    std::filesystem::remove_all(dir);
+}
+
 // SSR gives path lengths from its hits (eye → surface → the point seen at the hit pixel): its
 // `virtual` rows no longer fall back to the surface's motion, so they differ from `surface`.
 TEST(CameraPathRun, SsrReflectionsReprojectThroughTheirVirtualPoint) {
