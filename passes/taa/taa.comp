@@ -66,7 +66,7 @@ void main() {
     uint slot = motionSlotAt(clamp(pix + nearest, ivec2(0), size - 1));
     vec2 historyUv = previousUvMoving((vec2(pix) + 0.5) * frame.invScreenSize, nearestDepth, slot, prevW);
     float reflectionWeight = 0.0;  // 0: the surface's fetch alone
-    vec2 reflectionUv;
+    vec2 reflectionUv = vec2(0.0);
     if (pc.reflectionMotion != 0u) {
         float w = tileReflectionWeight[local.y * kTile + local.x];
         vec2 path = w > 0.0 ? texelFetch(pathTex, pix, 0).xy : vec2(0.0);

@@ -74,8 +74,8 @@ void main() {
         // The seed note's candidates: the motion at the incidence (the surface) and at the intersection
         // (the reflected point, where it is seen on screen, moved with its draw), each also
         // parallax-scaled; the smallest wins.
-        vec3 reflected = surface + reflect(view, n) * max(dist - length(surface - frame.cameraPos.xyz), 0.0);
-        vec3 reflectedBefore = slot == 0u ? reflected : (motions[slot].toPrevious * vec4(reflected, 1.0)).xyz;
+        vec3 reflected = reflectedPoint(surface, view, n, dist);
+        vec3 reflectedBefore = pointBefore(reflected, slot);
         vec4 clip = frame.viewProj * vec4(reflected, 1.0);
         vec2 reflectedUv = clip.xy / clip.w * 0.5 + 0.5;
         float reflectedW;
