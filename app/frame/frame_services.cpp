@@ -44,7 +44,8 @@ passes::Environment TechniqueFrame::environment() {
 }
 
 passes::TileLists TechniqueFrame::classifyTiles(uint32_t maxReflectorId) {
-    return services.tileClassify.add(graph, in, gbuffer, services.stats.import(graph, slot), maxReflectorId);
+    return services.tileClassify.add(graph, in, gbuffer, services.stats.import(graph, slot), maxReflectorId,
+                                     settings.tiles.classifyThreads);
 }
 
 }  // namespace ppr::app

@@ -26,12 +26,14 @@ struct EnvSettings {         // owner: env (every technique's misses)
 };
 struct TileSettings {        // owner: tiles (tile classification, used by ppr and the ssr-* techniques)
     bool indirect;           // dispatch over the tile lists (false: whole screen)
+    uint32_t classifyThreads; // tile classification's invocations per tile (passes/tile_classify/classify_threads.hpp); 0: auto
 };
 struct PprSettings {         // owner: ppr
     HoleRule holes;
     bool filter, antibleed;
     bool tiles;              // per-tile reflector culling in the projection
     bool facing;             // project only surfaces that face the mirrored eye
+    uint32_t projectThreads; // the projection's invocations per tile (passes/ppr_project/project_threads.hpp); 0: auto
     PprFallback fallback;
     NormalMap normalMap;     // the bonus slides' normal-map approximation in the reflection pass
 };

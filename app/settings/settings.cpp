@@ -1,11 +1,14 @@
 #include "settings/settings.hpp"
 
 #include "common/frame.h"
+#include "ppr_project/project_threads.hpp"
+#include "tile_classify/classify_threads.hpp"
 #include "settings/debug_views.hpp"
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <span>
 #include <stdexcept>
 
 namespace ppr::app {
@@ -77,6 +80,17 @@ SettingDecl debugSetting() {
     return d;
 }
 
+// A workgroup width: "auto" (stored as 0: the pass picks by device type) or one of the widths the
+// pass offers, listed there once.
+SettingDecl widthSetting(std::string key, std::string owner, Field<uint32_t> field, std::span<const uint32_t> offered, std::string help) {
+    std::vector<std::string> names{"auto"};
+    for (uint32_t t : offered) names.push_back(std::to_string(t));
+    SettingDecl d{std::move(key), SettingKind::Choice, "auto", names, 0, 0, std::move(owner), std::move(help)};
+    d.write = [field](FrameSettings& s, const std::string& v) { field(s) = v == "auto" ? 0u : static_cast<uint32_t>(std::stoul(v)); };
+    d.read = [field](const FrameSettings& s) { return at(field, s) == 0 ? std::string("auto") : std::to_string(at(field, s)); };
+    return d;
+}
+
 std::string join(const std::vector<std::string>& items, const char* sep) {
     std::string out;
     for (const std::string& s : items) out += (out.empty() ? "" : sep) + s;
@@ -126,8 +140,15 @@ const std::vector<SettingDecl>& settingDecls() {
                "PPR colour-bleeding reduction (YCoCg, luma and chroma apart)"),
         toggle("tiles", "ppr", [](FrameSettings& s) -> bool& { return s.ppr.tiles; }, true,
                "PPR per-tile reflector culling in the projection pass (0: every reflector per pixel)"),
+        widthSetting("project_threads", "ppr", [](FrameSettings& s) -> uint32_t& { return s.ppr.projectThreads; }, passes::kProjectThreadChoices,
+                     "PPR projection pass: invocations per 16x16 tile (auto: 32 on a CPU device, where barriers cost per "
+                     "invocation; 128 on a GPU); the same images with any"),
         toggle("indirect", "tiles", [](FrameSettings& s) -> bool& { return s.tiles.indirect; }, true,
                "PPR's reflection pass and the SSR techniques dispatched indirectly over the tile lists (0: whole screen)"),
+        widthSetting("classify_threads", "tiles", [](FrameSettings& s) -> uint32_t& { return s.tiles.classifyThreads; },
+                     passes::kClassifyThreadChoices,
+                     "tile classification: invocations per 16x16 tile (auto: 16 on a CPU device, 64 on a GPU); the same "
+                     "tile classes with any"),
         choice<PprFallback>("fallback", "ppr", [](FrameSettings& s) -> PprFallback& { return s.ppr.fallback; }, {"ssr", "none"}, "ssr",
                             "PPR: reflective pixels no reflector rectangle covers (curved, rough) get ssr-hiz over the non-planar tiles, or nothing"),
         choice<NormalMap>("normalmap", "ppr, ssr, raytraced", [](FrameSettings& s) -> NormalMap& { return s.ppr.normalMap; }, {"off", "approx", "raymarch"},

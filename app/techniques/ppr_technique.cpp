@@ -66,6 +66,7 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
     project.cullTiles = s.tiles;
     project.normal = f.gbuffer.normal;
     project.facingOnly = s.facing;
+    project.threads = s.projectThreads;
     passes::GlassRegionBuffers regions;
     addGlass(f, project, regions);
     const passes::PprProjectOutputs scatter = project_.add(f.graph, f.in, binding, project);

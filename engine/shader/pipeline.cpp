@@ -87,7 +87,8 @@ void Pipeline::pushConstants(VkCommandBuffer cmd, const void* data, uint32_t byt
     vkCmdPushConstants(cmd, layout_, stages_, 0, bytes, data);
 }
 
-Pipeline createComputePipeline(const vk::Context& ctx, Spirv spirv, const PipelineLayoutDesc& desc, const std::string& name) {
+Pipeline createComputePipeline(const vk::Context& ctx, Spirv spirv, const PipelineLayoutDesc& desc, const std::string& name,
+                               std::span<const uint32_t> specialization) {
     Pipeline p;
     p.device_ = ctx.device();
     p.bindPoint_ = VK_PIPELINE_BIND_POINT_COMPUTE;
@@ -100,7 +101,11 @@ Pipeline createComputePipeline(const vk::Context& ctx, Spirv spirv, const Pipeli
     createLayout(ctx, d, p.bindings_, name, p.pushSetLayout_, p.layout_);
     VkShaderModule module = createModule(ctx, spirv, name);
     VkComputePipelineCreateInfo ci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-    ci.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_COMPUTE_BIT, module, "main", nullptr};
+    std::vector<VkSpecializationMapEntry> entries;
+    for (uint32_t i = 0; i < specialization.size(); ++i) entries.push_back({i, i * uint32_t(sizeof(uint32_t)), sizeof(uint32_t)});
+    const VkSpecializationInfo spec{uint32_t(entries.size()), entries.data(), specialization.size_bytes(), specialization.data()};
+    ci.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_COMPUTE_BIT, module, "main",
+                specialization.empty() ? nullptr : &spec};
     ci.layout = p.layout_;
     VkResult r = vkCreateComputePipelines(ctx.device(), VK_NULL_HANDLE, 1, &ci, nullptr, &p.pipeline_);
     vkDestroyShaderModule(ctx.device(), module, nullptr);

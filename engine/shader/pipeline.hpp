@@ -49,7 +49,8 @@ public:
     void pushConstants(VkCommandBuffer cmd, const T& data) const { pushConstants(cmd, &data, sizeof(T)); }
 
 private:
-    friend Pipeline createComputePipeline(const vk::Context&, Spirv, const PipelineLayoutDesc&, const std::string&);
+    friend Pipeline createComputePipeline(const vk::Context&, Spirv, const PipelineLayoutDesc&, const std::string&,
+                                          std::span<const uint32_t>);
     friend class GraphicsPipelineBuilder;
     void reset();
     VkDevice device_ = VK_NULL_HANDLE;
@@ -63,7 +64,9 @@ private:
     std::vector<VkDescriptorType> bindings_;
 };
 
-Pipeline createComputePipeline(const vk::Context& ctx, Spirv spirv, const PipelineLayoutDesc& layout, const std::string& name);
+// `specialization[i]` is the value of the shader's `constant_id = i` (uint constants, e.g. a workgroup size).
+Pipeline createComputePipeline(const vk::Context& ctx, Spirv spirv, const PipelineLayoutDesc& layout, const std::string& name,
+                               std::span<const uint32_t> specialization = {});
 
 class GraphicsPipelineBuilder {
 public:

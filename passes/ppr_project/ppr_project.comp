@@ -18,9 +18,10 @@
 // (ppr_common/tile_culling.h) and keeps, in shared memory and in projection order, the survivors and
 // the possible occluders; each pixel then runs the per-reflector logic over those lists only. With
 // culling off the lists are all reflectors.
-// kPprProjectThreads invocations per tile, each projecting every kPprProjectThreads-th pixel: on
-// lavapipe a barrier costs in proportion to the invocations it stops, and culling has several.
-layout(local_size_x = kPprProjectThreads) in;
+// kThreads invocations per tile, each projecting every kThreads-th pixel: a specialization constant
+// (--set project_threads), since the best count depends on the device (ppr_project.h).
+layout(local_size_x_id = 0) in;
+layout(constant_id = 0) const uint kThreads = kPprProjectThreads;  // PprProjectPass always specialises it
 layout(set = 0, binding = 1) uniform sampler2D depthTex;
 layout(set = 0, binding = 2, scalar) readonly buffer Reflectors { ReflectorData reflectors[]; };
 layout(set = 0, binding = 3, scalar) readonly buffer Order { uint projectionOrder[]; };
@@ -35,7 +36,6 @@ layout(set = 0, binding = 10, scalar) readonly buffer GlassRegions { GlassRegion
 layout(set = 0, binding = 11) uniform sampler2D normalTex;  // G-buffer normal (pc.facingOnly)
 layout(push_constant, scalar) uniform Push { PprProjectPush pc; };
 
-const uint kThreads = kPprProjectThreads;
 const uint kPixelsPerThread = kPprTileSize * kPprTileSize / kThreads;
 
 // Tile bounds as order-preserving uints so that integer min/max reduce floats exactly.

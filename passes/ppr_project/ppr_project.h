@@ -12,10 +12,14 @@ PPR_CONST(float, kPprAboveEpsilonPerMetre, 1e-4f)
 // and the direction to the mirrored eye it counts as facing away (a margin for normal maps).
 PPR_CONST(float, kPprFacingCos, -0.05f)
 
-// Invocations per 16x16 tile workgroup, each projecting kPprTileSize^2 / this pixels. The culling's
-// barriers cost in proportion to the invocations they stop on lavapipe: ppr.project at 1280x720,
-// overview, medians of 3 interleaved runs: 256 -> 91 ms, 128 -> 57, 64 -> 46, 32 -> 31, 16 -> 38, 8 -> 36.
+// Invocations per 16x16 tile workgroup, each projecting kPprTileSize^2 / this pixels (the shader's
+// specialization constant; --set project_threads=auto picks by device type). On a CPU device the
+// culling's barriers cost in proportion to the invocations they stop: lavapipe, ppr.project at
+// 1280x720, overview, medians of 3 interleaved runs: 256 -> 91 ms, 128 -> 57, 64 -> 46, 32 -> 31.
+// On a GPU more invocations share the culling and the per-pixel work: H100, 1920x1080, medians of
+// 2 interleaved runs: 32 -> 0.163 ms, 64 -> 0.133, 128 -> 0.116, 256 -> 0.163 (docs/performance.md).
 PPR_CONST(uint, kPprProjectThreads, 32u)
+PPR_CONST(uint, kPprProjectThreadsGpu, 128u)
 
 PPR_BEGIN
 struct PprProjectPush {

@@ -9,14 +9,33 @@
 namespace ppr::passes {
 
 static_assert(gpu::kPprCullMinHeight < gpu::kPprAboveEpsilon, "culling must keep every tile the projection can write from");
-static_assert(gpu::kPprTileSize * gpu::kPprTileSize % gpu::kPprProjectThreads == 0, "every invocation projects the same number of pixels");
-static_assert(gpu::kPprMaxReflectors <= 32u * gpu::kPprProjectThreads, "each invocation judges a run of at most 32 reflectors (one bit mask)");
 
-PprProjectPass::PprProjectPass(const vk::Context& ctx) : ctx_(ctx) {
+namespace {
+constexpr WorkgroupWidths kWidths{kProjectThreadChoices, gpu::kPprProjectThreads, gpu::kPprProjectThreadsGpu};
+
+constexpr bool validWidths() {
+    bool cpuOffered = false, gpuOffered = false;
+    for (uint32_t t : kProjectThreadChoices) {
+        if (gpu::kPprTileSize * gpu::kPprTileSize % t != 0) return false;  // every invocation projects as many pixels
+        if (gpu::kPprMaxReflectors > 32u * t) return false;                  // each judges a run of at most 32 reflectors (a bit mask)
+        cpuOffered |= t == kWidths.cpu;
+        gpuOffered |= t == kWidths.gpu;
+    }
+    return cpuOffered && gpuOffered;
+}
+static_assert(validWidths(), "ppr.project's invocation counts must divide the tile, judge every reflector and hold the defaults");
+
+shader::PipelineLayoutDesc projectLayout() {
     shader::PipelineLayoutDesc layout;
     layout.pushConstantBytes = sizeof(gpu::PprProjectPush);
-    pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(ppr_project_comp), layout, "ppr.project");
+    return layout;
 }
+}  // namespace
+
+PprProjectPass::PprProjectPass(const vk::Context& ctx)
+    : ctx_(ctx), pipelines_(ctx, PPR_SPIRV(ppr_project_comp), projectLayout(), "ppr.project", kWidths) {}
+
+uint32_t PprProjectPass::autoThreads(const vk::DeviceInfo& device) { return kWidths.defaultFor(device); }
 
 PprProjectOutputs PprProjectPass::add(graph::RenderGraph& g, const FrameInputs& in, const ReflectorBinding& r,
                                       const PprProjectInputs& inputs) const {
@@ -29,7 +48,7 @@ PprProjectOutputs PprProjectPass::add(graph::RenderGraph& g, const FrameInputs& 
     push.facingOnly = inputs.facingOnly ? 1u : 0u;
     PprProjectOutputs out;
     graph::BufferHandle survivors = g.createBuffer("ppr.tile_survivors", {sizeof(uint32_t) * inputs.tilesX * inputs.tilesY});
-    ComputePass(g, ctx_, "ppr.project", pipeline_)
+    ComputePass(g, ctx_, "ppr.project", pipelines_.get(inputs.threads))
         .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
         .sampled(inputs.depth, in.samplers->nearestClamp)
         .hostStorage(r.reflectors)

@@ -2,7 +2,9 @@
 // PPR projection pass (ppr_project.comp): scatters every pixel's offset into the intermediate buffer,
 // one workgroup per screen tile, with optional per-tile reflector culling.
 #include "common/frame_inputs.hpp"
+#include "common/workgroup_widths.hpp"
 #include "graph/graph.hpp"
+#include "ppr_project/project_threads.hpp"
 
 namespace ppr::passes {
 
@@ -26,6 +28,7 @@ struct PprProjectInputs {
     bool glass = true;                // --set glass
     graph::ImageHandle normal;        // G-buffer normal (read with facingOnly)
     bool facingOnly = true;           // --set facing
+    uint32_t threads = 0;             // invocations per tile, one of kProjectThreadChoices; 0: autoThreads
 };
 
 struct PprProjectOutputs {
@@ -39,10 +42,12 @@ class PprProjectPass {
 public:
     explicit PprProjectPass(const vk::Context& ctx);
     PprProjectOutputs add(graph::RenderGraph& g, const FrameInputs& in, const ReflectorBinding& reflectors, const PprProjectInputs& inputs) const;
+    // What threads = 0 means on this device: kPprProjectThreads on a CPU, kPprProjectThreadsGpu elsewhere.
+    static uint32_t autoThreads(const vk::DeviceInfo& device);
 
 private:
     const vk::Context& ctx_;
-    shader::Pipeline pipeline_;
+    WidthPipelines pipelines_;
 };
 
 }  // namespace ppr::passes

@@ -9,10 +9,11 @@
 // One workgroup per screen tile: does the tile hold reflector-rectangle pixels (PPR's work), other
 // reflective pixels (a screen-space fallback's), or neither? Appends the tile to each list it
 // belongs to and counts it in that list's indirect dispatch arguments (Stachowiak 2015).
-// Each of the kTileClassifyThreads invocations looks at one column of the tile; each subgroup then
-// adds its answer with one shared atomic. One invocation per pixel cost 3.4x as much on lavapipe:
-// 256 invocations' scheduling and barriers, not the fetches.
-layout(local_size_x = kTileClassifyThreads) in;
+// kThreads invocations (a specialization constant, by device: tile_classify.h) look at every
+// kThreads-th pixel of the tile; each subgroup then adds its answer with one shared atomic. One
+// invocation per pixel cost 3.4x as much on lavapipe: 256 invocations' scheduling and barriers.
+layout(local_size_x_id = 0) in;
+layout(constant_id = 0) const uint kThreads = kTileClassifyThreads;  // TileClassifyPass always specialises it
 layout(set = 0, binding = 1) uniform usampler2D reflectorTex;
 layout(set = 0, binding = 2) uniform sampler2D materialTex;
 layout(set = 0, binding = 3, scalar) buffer Args { TileDispatchArgs args[]; };
@@ -26,7 +27,7 @@ void main() {
     barrier();
     uint bits = 0u;
     ivec2 origin = ivec2(gl_WorkGroupID.xy) * int(kPprTileSize);
-    for (uint i = gl_LocalInvocationIndex; i < kPprTileSize * kPprTileSize; i += kTileClassifyThreads) {
+    for (uint i = gl_LocalInvocationIndex; i < kPprTileSize * kPprTileSize; i += kThreads) {
         ivec2 pix = origin + ivec2(i % kPprTileSize, i / kPprTileSize);
         if (any(greaterThanEqual(pix, ivec2(frame.screenSize)))) continue;
         uint id = texelFetch(reflectorTex, pix, 0).r;

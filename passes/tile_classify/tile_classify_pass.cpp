@@ -10,14 +10,34 @@
 
 namespace ppr::passes {
 
-TileClassifyPass::TileClassifyPass(const vk::Context& ctx) : ctx_(ctx) {
+namespace {
+constexpr WorkgroupWidths kWidths{kClassifyThreadChoices, gpu::kTileClassifyThreads, gpu::kTileClassifyThreadsGpu};
+
+constexpr bool validWidths() {
+    bool cpuOffered = false, gpuOffered = false;
+    for (uint32_t t : kClassifyThreadChoices) {
+        if (gpu::kPprTileSize * gpu::kPprTileSize % t != 0) return false;  // every invocation classifies as many pixels
+        cpuOffered |= t == kWidths.cpu;
+        gpuOffered |= t == kWidths.gpu;
+    }
+    return cpuOffered && gpuOffered;
+}
+static_assert(validWidths(), "tiles.classify's invocation counts must divide the tile and hold the defaults");
+
+shader::PipelineLayoutDesc classifyLayout() {
     shader::PipelineLayoutDesc layout;
     layout.pushConstantBytes = sizeof(gpu::TileClassifyPush);
-    pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(tile_classify_comp), layout, "tiles.classify");
+    return layout;
 }
+}  // namespace
+
+TileClassifyPass::TileClassifyPass(const vk::Context& ctx)
+    : ctx_(ctx), pipelines_(ctx, PPR_SPIRV(tile_classify_comp), classifyLayout(), "tiles.classify", kWidths) {}
+
+uint32_t TileClassifyPass::autoThreads(const vk::DeviceInfo& device) { return kWidths.defaultFor(device); }
 
 TileLists TileClassifyPass::add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::BufferHandle stats,
-                                uint32_t maxReflectorId) const {
+                                uint32_t maxReflectorId, uint32_t threads) const {
     TileLists t;
     t.tilesX = gpu::pprTilesCovering(in.extent.width);
     t.tilesY = gpu::pprTilesCovering(in.extent.height);
@@ -46,7 +66,7 @@ TileLists TileClassifyPass::add(graph::RenderGraph& g, const FrameInputs& in, co
     push.tilesX = t.tilesX;
     push.tileCount = t.tileCount();
     push.maxReflectorId = maxReflectorId;
-    ComputePass(g, ctx_, "tiles.classify", pipeline_)
+    ComputePass(g, ctx_, "tiles.classify", pipelines_.get(threads))
         .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
         .sampled(gb.reflector, in.samplers->nearestClamp)
         .sampled(gb.material, in.samplers->nearestClamp)

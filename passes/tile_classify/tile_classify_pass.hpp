@@ -2,8 +2,10 @@
 // Tile classification (tile_classify.comp): per-class tile lists and their indirect dispatch
 // arguments, all graph buffers, plus the frame's tile counts in the stats buffer.
 #include "common/frame_inputs.hpp"
+#include "common/workgroup_widths.hpp"
 #include "gbuffer/gbuffer_pass.hpp"
 #include "graph/graph.hpp"
+#include "tile_classify/classify_threads.hpp"
 
 namespace ppr::passes {
 
@@ -20,12 +22,16 @@ public:
     explicit TileClassifyPass(const vk::Context& ctx);
     // Clears the arguments and `stats` ("tiles.clear", transfer), classifies ("tiles.classify") and
     // copies the arguments into `stats` ("tiles.count").
-    // Reflector ids above maxReflectorId do not make a tile planar (beyond PPR's budget).
-    TileLists add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::BufferHandle stats, uint32_t maxReflectorId) const;
+    // Reflector ids above maxReflectorId do not make a tile planar (beyond PPR's budget). `threads`:
+    // invocations per tile, one of kClassifyThreadChoices, or 0 for the device's default.
+    TileLists add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::BufferHandle stats, uint32_t maxReflectorId,
+                  uint32_t threads) const;
+    // What threads = 0 means on this device: kTileClassifyThreads on a CPU, kTileClassifyThreadsGpu elsewhere.
+    static uint32_t autoThreads(const vk::DeviceInfo& device);
 
 private:
     const vk::Context& ctx_;
-    shader::Pipeline pipeline_;
+    WidthPipelines pipelines_;
 };
 
 }  // namespace ppr::passes

@@ -4,11 +4,16 @@
 #include "gpu_test_util.hpp"
 #include "techniques/technique_table.hpp"
 #include "ppr_common/tiles.h"
+#include "ppr_project/ppr_project_pass.hpp"
+#include "ppr_project/project_threads.hpp"
+#include "tile_classify/tile_classify_pass.hpp"
+#include "vk/live_objects.hpp"
 #include "scene/stress_scene.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <cstring>
+#include <span>
 #include <fstream>
 
 namespace ppr::test {
@@ -67,6 +72,60 @@ TEST(PprTiles, CullingAndIndirectAreBitIdenticalOnTheStressScene) {
     GpuFixture f(scene::makeStressScene(256));
     for (const char* camera : {"overview", "reflective_5", "reflective_25"}) expectTogglesChangeNothing(f, camera);
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
+}
+
+// A workgroup width a pass offers by setting (project_threads, classify_threads): any gives the
+// same reflection and intermediate buffer as the first offered one, with culling on and off.
+struct WidthSetting {
+    const char* key;
+    std::span<const uint32_t> offered;
+    uint32_t (*deviceDefault)(const vk::DeviceInfo&);  // the pass's autoThreads
+};
+
+// Returns the pipelines made while the widths were tried.
+int64_t expectWidthsChangeNothing(GpuFixture& f, const std::string& camera, const WidthSetting& w) {
+    const scene::CameraPose pose = f.camera(camera);
+    const std::string first = std::to_string(w.offered.front());
+    int64_t made = 0;
+    for (const char* tiles : {"1", "0"}) {
+        f.headless->settings().set(w.key, first);
+        const Frame reference = render(f, pose, tiles, "1"), intermediate = render(f, pose, tiles, "1", "intermediate");
+        EXPECT_GT(reflectedPixels(reference.reflection), 100u) << camera << ": the view should show reflections";
+        const int64_t before = vk::liveObjects().pipelines;
+        for (uint32_t width : w.offered) {
+            f.headless->settings().set(w.key, std::to_string(width));
+            EXPECT_TRUE(identical(render(f, pose, tiles, "1").reflection, reference.reflection))
+                << camera << ": " << w.key << "=" << width << " tiles=" << tiles << " changes the reflection";
+            EXPECT_TRUE(identical(render(f, pose, tiles, "1", "intermediate").reflection, intermediate.reflection))
+                << camera << ": " << w.key << "=" << width << " tiles=" << tiles << " changes the intermediate buffer";
+        }
+        made += vk::liveObjects().pipelines - before;
+    }
+    f.headless->settings().set(w.key, "auto");
+    return made;
+}
+
+void expectWidthsChangeNothing(const WidthSetting& w) {
+    {
+        GpuFixture f;
+        // One pipeline per width not made before (the device's default, made up front, and the
+        // reference's), once: none on a second view.
+        const int64_t fresh = int64_t(w.offered.size()) - (w.deviceDefault(f.ctx->info()) == w.offered.front() ? 1 : 2);
+        EXPECT_EQ(expectWidthsChangeNothing(f, "overview", w), fresh) << w.key;
+        EXPECT_EQ(expectWidthsChangeNothing(f, "mirror", w), 0) << w.key;
+        EXPECT_EQ(f.ctx->validationErrors(), 0u);
+    }
+    GpuFixture f(scene::makeStressScene(1024));
+    expectWidthsChangeNothing(f, "reflective_25", w);
+    EXPECT_EQ(f.ctx->validationErrors(), 0u);
+}
+
+TEST(PprTiles, EveryProjectionWidthGivesTheSameImages) {
+    expectWidthsChangeNothing({"project_threads", passes::kProjectThreadChoices, &passes::PprProjectPass::autoThreads});
+}
+
+TEST(PprTiles, EveryClassificationWidthGivesTheSameImages) {
+    expectWidthsChangeNothing({"classify_threads", passes::kClassifyThreadChoices, &passes::TileClassifyPass::autoThreads});
 }
 
 TEST(PprTiles, CullingKeepsFewReflectorsPerTile) {

@@ -56,6 +56,16 @@ TEST(Settings, DecodesIntoTypedFields) {
     EXPECT_EQ(v.view.debug, ppr::gpu::kDebugShadow);
     EXPECT_EQ(s.get("ssr_thickness"), "0.125");
     EXPECT_EQ(s.get("debug"), "shadow");
+    EXPECT_EQ(v.ppr.projectThreads, 0u);  // auto: the pass picks by device
+    s.apply("project_threads=128");
+    EXPECT_EQ(v.ppr.projectThreads, 128u);
+    EXPECT_EQ(s.get("project_threads"), "128");
+    s.apply("project_threads=auto");
+    EXPECT_EQ(v.ppr.projectThreads, 0u);
+    EXPECT_EQ(v.tiles.classifyThreads, 0u);
+    s.apply("classify_threads=64");
+    EXPECT_EQ(v.tiles.classifyThreads, 64u);
+    EXPECT_EQ(s.get("classify_threads"), "64");
 }
 
 TEST(Settings, FloatTextRoundTrips) {
@@ -86,6 +96,8 @@ TEST(Settings, RejectsBadValuesNamingKeyAndWhatIsAccepted) {
     expectRejected("ssr_steps=2.5", "ssr_steps=2.5: expected a whole number in [1, 65536]");
     expectRejected("glass_atlas=", "expected a whole number");
     expectRejected("exposure=1x", "expected a number");
+    expectRejected("project_threads=48", "project_threads=48: expected one of auto|32|64|128|256");
+    expectRejected("classify_threads=32", "classify_threads=32: expected one of auto|16|64|256");
     expectRejected("novalue", "expected key=value");
     expectRejected("=1", "expected key=value");
 }

@@ -1,0 +1,24 @@
+#include "common/workgroup_widths.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace ppr::passes {
+
+WidthPipelines::WidthPipelines(const vk::Context& ctx, shader::Spirv spirv, shader::PipelineLayoutDesc layout, std::string name,
+                               WorkgroupWidths widths)
+    : ctx_(ctx), spirv_(spirv), layout_(std::move(layout)), name_(std::move(name)), widths_(widths) {
+    get(0);
+}
+
+const shader::Pipeline& WidthPipelines::get(uint32_t width) const {
+    if (width == 0) width = widths_.defaultFor(ctx_.info());
+    if (std::find(widths_.offered.begin(), widths_.offered.end(), width) == widths_.offered.end())
+        throw std::invalid_argument(name_ + ": " + std::to_string(width) + " invocations per workgroup is not offered");
+    auto it = pipelines_.find(width);
+    if (it != pipelines_.end()) return it->second;
+    const uint32_t specialization[] = {width};
+    return pipelines_.emplace(width, shader::createComputePipeline(ctx_, spirv_, layout_, name_, specialization)).first->second;
+}
+
+}  // namespace ppr::passes

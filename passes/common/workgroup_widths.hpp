@@ -1,0 +1,38 @@
+#pragma once
+// A compute pipeline whose workgroup width is the shader's specialization constant 0
+// (`layout(local_size_x_id = 0)`), where the best width depends on the device: on lavapipe a barrier
+// costs in proportion to the invocations it stops, on a GPU wider groups share the work. One
+// pipeline per width asked for: the device's default made up front, another when a setting first
+// asks for it (never per frame).
+#include "shader/pipeline.hpp"
+
+#include <cstdint>
+#include <map>
+#include <span>
+#include <string>
+
+namespace ppr::passes {
+
+struct WorkgroupWidths {
+    std::span<const uint32_t> offered;  // what the setting may choose
+    uint32_t cpu = 0, gpu = 0;          // the default on a CPU device, and on any other
+    uint32_t defaultFor(const vk::DeviceInfo& device) const { return device.type == "cpu" ? cpu : gpu; }
+};
+
+class WidthPipelines {
+public:
+    WidthPipelines(const vk::Context& ctx, shader::Spirv spirv, shader::PipelineLayoutDesc layout, std::string name,
+                   WorkgroupWidths widths);
+    // The pipeline for `width` invocations per workgroup (0: the device's default); throws for a width not offered.
+    const shader::Pipeline& get(uint32_t width) const;
+
+private:
+    const vk::Context& ctx_;
+    shader::Spirv spirv_;
+    shader::PipelineLayoutDesc layout_;
+    std::string name_;
+    WorkgroupWidths widths_;
+    mutable std::map<uint32_t, shader::Pipeline> pipelines_;
+};
+
+}  // namespace ppr::passes
