@@ -17,6 +17,17 @@ struct WorkgroupWidths {
     std::span<const uint32_t> offered;  // what the setting may choose
     uint32_t cpu = 0, gpu = 0;          // the default on a CPU device, and on any other
     uint32_t defaultFor(const vk::DeviceInfo& device) const { return device.type == "cpu" ? cpu : gpu; }
+    // Every width offered gives each invocation as many of `items` and is at least `least`; both
+    // defaults are offered. For the passes' static_asserts.
+    constexpr bool valid(uint32_t items, uint32_t least) const {
+        bool cpuOffered = false, gpuOffered = false;
+        for (uint32_t w : offered) {
+            if (w < least || items % w != 0) return false;
+            cpuOffered |= w == cpu;
+            gpuOffered |= w == gpu;
+        }
+        return cpuOffered && gpuOffered;
+    }
 };
 
 class WidthPipelines {

@@ -13,17 +13,9 @@ static_assert(gpu::kPprCullMinHeight < gpu::kPprAboveEpsilon, "culling must keep
 namespace {
 constexpr WorkgroupWidths kWidths{kProjectThreadChoices, gpu::kPprProjectThreads, gpu::kPprProjectThreadsGpu};
 
-constexpr bool validWidths() {
-    bool cpuOffered = false, gpuOffered = false;
-    for (uint32_t t : kProjectThreadChoices) {
-        if (gpu::kPprTileSize * gpu::kPprTileSize % t != 0) return false;  // every invocation projects as many pixels
-        if (gpu::kPprMaxReflectors > 32u * t) return false;                  // each judges a run of at most 32 reflectors (a bit mask)
-        cpuOffered |= t == kWidths.cpu;
-        gpuOffered |= t == kWidths.gpu;
-    }
-    return cpuOffered && gpuOffered;
-}
-static_assert(validWidths(), "ppr.project's invocation counts must divide the tile, judge every reflector and hold the defaults");
+// Each invocation projects as many pixels and judges a run of at most 32 reflectors (one bit mask).
+static_assert(kWidths.valid(gpu::kPprTileSize * gpu::kPprTileSize, (gpu::kPprMaxReflectors + 31u) / 32u),
+              "ppr.project's invocation counts must divide the tile, judge every reflector and hold the defaults");
 
 shader::PipelineLayoutDesc projectLayout() {
     shader::PipelineLayoutDesc layout;

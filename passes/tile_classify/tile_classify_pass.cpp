@@ -13,16 +13,8 @@ namespace ppr::passes {
 namespace {
 constexpr WorkgroupWidths kWidths{kClassifyThreadChoices, gpu::kTileClassifyThreads, gpu::kTileClassifyThreadsGpu};
 
-constexpr bool validWidths() {
-    bool cpuOffered = false, gpuOffered = false;
-    for (uint32_t t : kClassifyThreadChoices) {
-        if (gpu::kPprTileSize * gpu::kPprTileSize % t != 0) return false;  // every invocation classifies as many pixels
-        cpuOffered |= t == kWidths.cpu;
-        gpuOffered |= t == kWidths.gpu;
-    }
-    return cpuOffered && gpuOffered;
-}
-static_assert(validWidths(), "tiles.classify's invocation counts must divide the tile and hold the defaults");
+static_assert(kWidths.valid(gpu::kPprTileSize * gpu::kPprTileSize, 1u),
+              "tiles.classify's invocation counts must divide the tile and hold the defaults");
 
 shader::PipelineLayoutDesc classifyLayout() {
     shader::PipelineLayoutDesc layout;
