@@ -46,6 +46,8 @@ shared vec3 hitLo[kPprMaxCullPlanes], hitHi[kPprMaxCullPlanes];  // and its hit 
 shared uint survivorWords[kPprMaxReflectors / 2u];  // 16-bit reflector indices, in projection order
 shared uint occluderWords[kPprMaxReflectors / 2u];  // 16-bit reflector indices, in any order
 shared uint runSurvivors[kThreads];  // survivors in each invocation's run of the projection order
+shared uint subgroupSurvivors[kThreads];  // their sums per subgroup (gl_SubgroupID)
+shared uint scatteredSubgroups;           // 1 if some subgroup is not a consecutive run of invocations
 shared uint survivorCount, occluderCount;
 shared uint reachLoX, reachLoY, reachHiX, reachHiY;  // pixels the survivors can write to
 
@@ -144,7 +146,13 @@ void cullReflectors(vec3 lo, vec3 hi) {
         reachMine = uvec4(min(reachMine.xy, uvec2(max(mirrored.x & 0xFFFFu, b.rect.x & 0xFFFFu), max(mirrored.x >> 16u, b.rect.x >> 16u))),
                           max(reachMine.zw, uvec2(min(mirrored.y & 0xFFFFu, b.rect.y & 0xFFFFu), min(mirrored.y >> 16u, b.rect.y >> 16u))));
     }
-    runSurvivors[lid] = bitCount(verdicts);
+    uint mine = bitCount(verdicts);
+    runSurvivors[lid] = mine;
+    // Where every subgroup holds consecutive invocations in order (the devices we know), a subgroup
+    // scan and one sum per subgroup give the ranks; otherwise each invocation adds up the runs before it.
+    uint beforeInSubgroup = subgroupExclusiveAdd(mine), subgroupTotal = subgroupAdd(mine);
+    if (subgroupElect()) subgroupSurvivors[gl_SubgroupID] = subgroupTotal;
+    if (gl_SubgroupID * gl_SubgroupSize + gl_SubgroupInvocationID != lid) atomicOr(scatteredSubgroups, 1u);
     if (verdicts != 0u) {
         atomicMin(reachLoX, reachMine.x);
         atomicMin(reachLoY, reachMine.y);
@@ -153,9 +161,17 @@ void cullReflectors(vec3 lo, vec3 hi) {
     }
     barrier();
     uint rank = 0u, total = 0u;
-    for (uint t = 0u; t < kThreads; ++t) {
-        if (t < lid) rank += runSurvivors[t];
-        total += runSurvivors[t];
+    if (scatteredSubgroups == 0u) {
+        for (uint g = 0u; g < gl_NumSubgroups; ++g) {
+            if (g < gl_SubgroupID) rank += subgroupSurvivors[g];
+            total += subgroupSurvivors[g];
+        }
+        rank += beforeInSubgroup;
+    } else {
+        for (uint t = 0u; t < kThreads; ++t) {
+            if (t < lid) rank += runSurvivors[t];
+            total += runSurvivors[t];
+        }
     }
     for (uint bits = verdicts; bits != 0u; bits &= bits - 1u, ++rank) {
         uint i = projectionOrder[first + uint(findLSB(bits))];
@@ -237,6 +253,7 @@ void main() {
         boxHi = uvec3(0u);
         survivorCount = 0u;
         occluderCount = 0u;
+        scatteredSubgroups = 0u;
         reachLoX = reachLoY = 0xFFFFu;
         reachHiX = reachHiY = 0u;
     }
