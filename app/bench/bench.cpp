@@ -206,6 +206,7 @@ private:
                 row.tiles = tiles;
                 row.projectMs = passOr0(m.passMs, "ppr.project");
                 row.boundsMs = passOr0(m.passMs, "ppr.bounds");
+                row.reachMs = passOr0(m.passMs, "ppr.reach");
                 row.techniqueMs = techniqueCost("ppr", m.passMs);
                 if (m.last.pprStats) {
                     row.pairs = m.last.pprStats->reflectorTilePairs;

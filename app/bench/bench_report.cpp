@@ -238,6 +238,7 @@ nlohmann::json benchJson(const BenchResults& r) {
                             {"tiles", row.tiles ? 1 : 0},
                             {"project_ms", row.projectMs},
                             {"bounds_ms", row.boundsMs},
+                            {"reach_ms", row.reachMs},
                             {"technique_ms", row.techniqueMs},
                             {"reflector_tile_pairs", row.pairs},
                             {"reflector_tile_pairs_unculled", row.pairsUnculled}});
@@ -280,16 +281,19 @@ std::string benchMarkdown(const BenchResults& r, const std::string& commandLine)
               std::to_string(kSlidesSize[1]) + "; another GPU, scene and size: compare the ratios)\n\n" + slidesTable(r) + "\n";
     }
     if (!r.reflectors.empty()) {
-        md += "## Reflector count (" + r.reflectorsScene + ", camera " + r.reflectorsCamera + "): `ppr.project` ms\n\n";
+        md += "## Reflector count (" + r.reflectorsScene + ", camera " + r.reflectorsCamera + "): `ppr.project` (+ `ppr.reach`) ms\n\n";
         md += "| reflectors | tiles=1 | tiles=0 | tiles=0 / tiles=1 | tiles=1 / (N=1) | pairs kept (tiles=1) | pairs without culling |\n"
               "|---:|---:|---:|---:|---:|---:|---:|\n";
         const BenchReflectorRow* first = findRow(r, reflectorCounts(r).front(), true);
+        auto projection = [](const BenchReflectorRow& row) {
+            return row.reachMs > 0 ? fixed(row.projectMs, 2) + " (+ " + fixed(row.reachMs, 2) + ")" : fixed(row.projectMs, 2);
+        };
         for (uint32_t n : reflectorCounts(r)) {
             const BenchReflectorRow* on = findRow(r, n, true);
             const BenchReflectorRow* off = findRow(r, n, false);
-            md += "| " + std::to_string(n) + " | " + (on ? fixed(on->projectMs, 2) : "–") + " | " + (off ? fixed(off->projectMs, 2) : "–") +
-                  " | " + (on && off && on->projectMs > 0 ? fixed(off->projectMs / on->projectMs, 2) : "–") + " | " +
-                  (on && first && first->projectMs > 0 ? fixed(on->projectMs / first->projectMs, 2) : "–") + " | " +
+            md += "| " + std::to_string(n) + " | " + (on ? projection(*on) : "–") + " | " + (off ? fixed(off->projectMs, 2) : "–") +
+                  " | " + (on && off && on->projectionMs() > 0 ? fixed(off->projectionMs() / on->projectionMs(), 2) : "–") + " | " +
+                  (on && first && first->projectionMs() > 0 ? fixed(on->projectionMs() / first->projectionMs(), 2) : "–") + " | " +
                   (on ? std::to_string(on->pairs) : "–") + " | " + (on ? std::to_string(on->pairsUnculled) : "–") + " |\n";
         }
         md += "\n";
@@ -314,7 +318,7 @@ bool writeBenchPlot(const BenchResults& r, const std::string& path) {
     std::vector<util::Rgba8Image> charts;
     if (!r.reflectors.empty()) {
         PlotSpec spec;
-        spec.title = "ppr.project vs reflector count";
+        spec.title = "ppr.project (+ ppr.reach) vs reflector count";
         spec.xLabel = "mirror tiles (reflectors)";
         spec.yLabel = "GPU ms";
         spec.logX = true;
@@ -324,7 +328,7 @@ bool writeBenchPlot(const BenchResults& r, const std::string& path) {
             for (const BenchReflectorRow& row : r.reflectors)
                 if (row.tiles == tiles) {
                     s.x.push_back(row.reflectors);
-                    s.y.push_back(row.projectMs);
+                    s.y.push_back(row.projectionMs());
                 }
             if (!s.x.empty()) spec.series.push_back(s);
         }

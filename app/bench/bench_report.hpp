@@ -26,7 +26,8 @@ struct BenchTechnique {
 struct BenchReflectorRow {  // reflectors sweep
     uint32_t reflectors = 0;
     bool tiles = true;
-    double projectMs = 0.0, boundsMs = 0.0, techniqueMs = 0.0;
+    double projectMs = 0.0, boundsMs = 0.0, reachMs = 0.0, techniqueMs = 0.0;  // reach: 0 unless tiles=1 indirect=1
+    double projectionMs() const { return projectMs + reachMs; }                 // the projection with the pass that picks its tiles
     uint64_t pairs = 0, pairsUnculled = 0;
 };
 

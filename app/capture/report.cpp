@@ -20,6 +20,8 @@ nlohmann::json pprStatsJson(const CaptureResult& r, VkExtent2D size, size_t proj
             {"tiles_planar", s.dispatch[gpu::kTileClassPlanar].x},
             {"tiles_other", s.dispatch[gpu::kTileClassOther].x},
             {"tiles_with_content", s.tilesWithContent},
+            {"tiles_projected", s.tilesProjected},  // the projection pass's workgroups
+            {"tiles_with_survivors", s.tilesWithSurvivors},
             {"reflectors_projected", projected},
             // Without culling every content tile would test every reflector.
             {"reflector_tile_pairs_unculled", uint64_t(s.tilesWithContent) * projected},

@@ -2,6 +2,7 @@
 
 #include "common/frame.h"
 #include "ppr_project/project_threads.hpp"
+#include "ppr_reach/reach_threads.hpp"
 #include "tile_classify/classify_threads.hpp"
 #include "settings/debug_views.hpp"
 
@@ -143,6 +144,9 @@ const std::vector<SettingDecl>& settingDecls() {
         widthSetting("project_threads", "ppr", [](FrameSettings& s) -> uint32_t& { return s.ppr.projectThreads; }, passes::kProjectThreadChoices,
                      "PPR projection pass: invocations per 16x16 tile (auto: 32 on a CPU device, where barriers cost per "
                      "invocation; 128 on a GPU); the same images with any"),
+        widthSetting("reach_threads", "ppr", [](FrameSettings& s) -> uint32_t& { return s.ppr.reachThreads; }, passes::kReachThreadChoices,
+                     "PPR reach pass (with tiles=1 indirect=1: the tiles the projection runs on): invocations per 16x16 tile "
+                     "(auto: 1 on a CPU device, 16 on a GPU); the same tiles with any"),
         toggle("indirect", "tiles", [](FrameSettings& s) -> bool& { return s.tiles.indirect; }, true,
                "PPR's reflection pass and the SSR techniques dispatched indirectly over the tile lists (0: whole screen)"),
         widthSetting("classify_threads", "tiles", [](FrameSettings& s) -> uint32_t& { return s.tiles.classifyThreads; },

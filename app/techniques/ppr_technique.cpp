@@ -31,7 +31,7 @@ uint32_t reflectFlags(const FrameSettings& s) {  // the screen's reflection pass
 }  // namespace
 
 PprTechnique::PprTechnique(FrameServices& s)
-    : project_(s.ctx), reflect_(s.ctx), bounds_(s.ctx), fallback_(passes::makeSsrHizPass(s.ctx)) {}
+    : project_(s.ctx), reflect_(s.ctx), bounds_(s.ctx), reach_(s.ctx), fallback_(passes::makeSsrHizPass(s.ctx)) {}
 
 std::string PprTechnique::unsupported(VkExtent2D extent) const {
     // The intermediate encoding holds offsets up to 4095 px; larger frames render without PPR.
@@ -67,6 +67,10 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
     project.normal = f.gbuffer.normal;
     project.facingOnly = s.facing;
     project.threads = s.projectThreads;
+    // With culling and indirect dispatch, the projection runs only on the tiles that can be reflected.
+    if (s.tiles && f.settings.tiles.indirect)
+        project.reach = reach_.add(f.graph, f.in, binding,
+                                   {project.depth, project.bounds, project.stats, project.tilesX, project.tilesY, s.reachThreads});
     passes::GlassRegionBuffers regions;
     addGlass(f, project, regions);
     const passes::PprProjectOutputs scatter = project_.add(f.graph, f.in, binding, project);

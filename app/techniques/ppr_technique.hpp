@@ -5,6 +5,7 @@
 #include "frame/technique.hpp"
 #include "ppr_bounds/ppr_bounds_pass.hpp"
 #include "ppr_project/ppr_project_pass.hpp"
+#include "ppr_reach/ppr_reach_pass.hpp"
 #include "ppr_reflect/ppr_reflect_pass.hpp"
 #include "ssr_common/ssr_trace_pass.hpp"
 
@@ -24,6 +25,7 @@ private:
     passes::PprProjectPass project_;
     passes::PprReflectPass reflect_;
     passes::PprBoundsPass bounds_;
+    passes::PprReachPass reach_;
     std::unique_ptr<passes::SsrTracePass> fallback_;  // ssr-hiz's pass, over the non-planar tiles
 };
 

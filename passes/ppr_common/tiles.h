@@ -35,8 +35,8 @@ struct PprFrameStats {
     uint reflectorTilePairs;       // (tile, reflector) pairs that survived culling
     uint occluderTilePairs;        // (tile, reflector) pairs kept as possible occluders
     uint maxTileSurvivors;         // the most reflectors surviving in one tile
-    uint pad0;
-    uint pad1;
+    uint tilesProjected;           // workgroups of the projection pass (all tiles, or the reach pass's list)
+    uint tilesWithSurvivors;       // tiles left with at least one reflector after culling
 };
 PPR_END
 PPR_SIZE_CHECK(PprFrameStats, 48);

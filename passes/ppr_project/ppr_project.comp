@@ -12,8 +12,10 @@
 
 // PPR step 2, the projection pass: every pixel finds the reflectors that reflect it and scatters its
 // screen-space offset to where it appears in them, keeping the closest with imageAtomicMin.
-// One workgroup per screen tile. Each invocation reconstructs the world positions of its pixels once,
-// keeps them in registers and reduces their bounds (one shared atomic per subgroup and value). With
+// One workgroup per screen tile: every tile, or with culling and indirect dispatch only the tiles the
+// reach pass listed (ppr_reach.comp: the rest would keep no reflector). Each invocation reconstructs
+// the world positions of its pixels once, keeps them in registers and reduces their bounds (one
+// shared atomic per subgroup and value). With
 // culling on, the workgroup then tests every reflector against the tile's bounds in parallel
 // (ppr_common/tile_culling.h) and keeps, in shared memory and in projection order, the survivors and
 // the possible occluders; each pixel then runs the per-reflector logic over those lists only. With
@@ -34,6 +36,7 @@ layout(set = 0, binding = 8, scalar) readonly buffer PlaneLeaders { uint planeLe
 layout(set = 0, binding = 9, r32ui) uniform uimage2D glassAtlas;
 layout(set = 0, binding = 10, scalar) readonly buffer GlassRegions { GlassRegionData glassRegions[]; };  // per reflector
 layout(set = 0, binding = 11) uniform sampler2D normalTex;  // G-buffer normal (pc.facingOnly)
+layout(set = 0, binding = 12, scalar) readonly buffer ReachTiles { uint reachTiles[]; };  // pc.tileList: the tiles to project
 layout(push_constant, scalar) uniform Push { PprProjectPush pc; };
 
 const uint kPixelsPerThread = kPprTileSize * kPprTileSize / kThreads;
@@ -192,10 +195,13 @@ void cullReflectors(vec3 lo, vec3 hi) {
     barrier();
 }
 
+// The screen tile this workgroup projects: its id, or with the reach pass's list, the id-th listed tile.
+uvec2 tile;
+
 // This invocation's j-th pixel of the tile.
 ivec2 pixelOf(uint j) {
     uint i = gl_LocalInvocationIndex + j * kThreads;
-    return ivec2(gl_WorkGroupID.xy) * int(kPprTileSize) + ivec2(i % kPprTileSize, i / kPprTileSize);
+    return ivec2(tile) * int(kPprTileSize) + ivec2(i % kPprTileSize, i / kPprTileSize);
 }
 
 // Projects one pixel of the tile, at world position p, into every reflector among the candidates
@@ -248,6 +254,7 @@ void projectPixel(ivec2 pix, vec3 p, uint candidates, uint occluders) {
 
 void main() {
     uint lid = gl_LocalInvocationIndex;
+    tile = pc.tileList != 0u ? pprUnpackTile(reachTiles[gl_WorkGroupID.x]) : gl_WorkGroupID.xy;
     if (lid == 0u) {
         boxLo = uvec3(0xFFFFFFFFu);
         boxHi = uvec3(0u);
@@ -296,8 +303,10 @@ void main() {
         occluders = occluderCount;
     }
     if (lid == 0u) {
-        tileSurvivors[gl_WorkGroupID.y * pc.tilesX + gl_WorkGroupID.x] = candidates;
-        if (hasContent) atomicAdd(stats.tilesWithContent, 1u);
+        tileSurvivors[tile.y * pc.tilesX + tile.x] = candidates;
+        if (hasContent && pc.tileList == 0u) atomicAdd(stats.tilesWithContent, 1u);  // else the reach pass counted them
+        atomicAdd(stats.tilesProjected, 1u);
+        if (candidates > 0u) atomicAdd(stats.tilesWithSurvivors, 1u);
         atomicAdd(stats.reflectorTilePairs, candidates);
         atomicAdd(stats.occluderTilePairs, occluders);
         atomicMax(stats.maxTileSurvivors, candidates);

@@ -29,7 +29,8 @@ struct PprProjectPush {
     uint cullPlaneCount;  // ≤ kPprMaxCullPlanes (ppr_common/tile_culling.h)
     uint glass;           // 1: glass reflectors write into their atlas regions (--set glass=1); 0: skipped
     uint facingOnly;      // 1: a pixel whose surface faces away from the mirrored eye writes nothing (--set facing=1)
-    uint pad1, pad2;
+    uint tileList;        // 1: workgroup i projects the tile in the reach pass's list at i (ppr_reach); 0: tile = workgroup id
+    uint pad2;
 };
 PPR_END
 PPR_SIZE_CHECK(PprProjectPush, 32);

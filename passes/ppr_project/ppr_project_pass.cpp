@@ -38,23 +38,33 @@ PprProjectOutputs PprProjectPass::add(graph::RenderGraph& g, const FrameInputs& 
     push.cullPlaneCount = r.cullPlanes;
     push.glass = inputs.glass ? 1u : 0u;
     push.facingOnly = inputs.facingOnly ? 1u : 0u;
+    push.tileList = inputs.reach ? 1u : 0u;
     PprProjectOutputs out;
-    graph::BufferHandle survivors = g.createBuffer("ppr.tile_survivors", {sizeof(uint32_t) * inputs.tilesX * inputs.tilesY});
-    ComputePass(g, ctx_, "ppr.project", pipelines_.get(inputs.threads))
-        .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
+    const uint32_t tileCount = inputs.tilesX * inputs.tilesY;
+    // With a tile list the reach pass has already written the survivor counts of the tiles it left
+    // out and counted the tiles with content; without one, the list binding is a stand-in never read.
+    const graph::BufferHandle survivors =
+        inputs.reach ? inputs.reach->tileSurvivors : g.createBuffer("ppr.tile_survivors", {sizeof(uint32_t) * tileCount});
+    ComputePass pass(g, ctx_, "ppr.project", pipelines_.get(inputs.threads));
+    pass.uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
         .sampled(inputs.depth, in.samplers->nearestClamp)
         .hostStorage(r.reflectors)
         .hostStorage(r.order)
         .storageReadWrite(inputs.intermediate, &out.intermediate)
-        .storageRead(inputs.bounds)
-        .storageWrite(survivors, &out.tileSurvivors)
-        .storageReadWrite(inputs.stats, &out.stats)
+        .storageRead(inputs.bounds);
+    if (inputs.reach) pass.storageReadWrite(survivors, &out.tileSurvivors);
+    else pass.storageWrite(survivors, &out.tileSurvivors);
+    pass.storageReadWrite(inputs.reach ? inputs.reach->stats : inputs.stats, &out.stats)
         .hostStorage(r.planeLeaders)
         .storageReadWrite(inputs.glassAtlas, &out.glassAtlas)
         .storageRead(inputs.glassRegions)
-        .sampled(inputs.normal, in.samplers->nearestClamp)
-        .push(push)
-        .dispatch(in.extent, gpu::kPprTileSize);
+        .sampled(inputs.normal, in.samplers->nearestClamp);
+    graph::BufferHandle unused;
+    if (inputs.reach) pass.storageRead(inputs.reach->tiles);  // binding 12
+    else pass.storageWrite(g.createBuffer("ppr.reach.unused", {sizeof(uint32_t)}), &unused);
+    pass.push(push);
+    if (inputs.reach) pass.dispatchIndirect(inputs.reach->args);
+    else pass.dispatch(in.extent, gpu::kPprTileSize);
     return out;
 }
 

@@ -4,6 +4,8 @@
 #include "common/frame_inputs.hpp"
 #include "common/workgroup_widths.hpp"
 #include "graph/graph.hpp"
+
+#include <optional>
 #include "ppr_project/project_threads.hpp"
 
 namespace ppr::passes {
@@ -14,6 +16,15 @@ struct ReflectorBinding {  // the reflector buffers of the frame's slot (common/
     VkBuffer planeLeaders = VK_NULL_HANDLE;  // a reflector per cull plane
     uint32_t count = 0;                      // reflectors projected (≤ kPprMaxReflectors)
     uint32_t cullPlanes = 0;
+};
+
+// The tiles the projection is dispatched on indirectly (ppr_reach/ppr_reach_pass.hpp), and the
+// buffers that pass wrote before it.
+struct PprTileList {
+    graph::BufferHandle args;           // TileDispatchArgs (ppr_common/tiles.h)
+    graph::BufferHandle tiles;          // args.x packed tiles
+    graph::BufferHandle tileSurvivors;  // 0 for every tile left out
+    graph::BufferHandle stats;          // PprFrameStats, tilesWithContent counted
 };
 
 struct PprProjectInputs {
@@ -29,6 +40,7 @@ struct PprProjectInputs {
     graph::ImageHandle normal;        // G-buffer normal (read with facingOnly)
     bool facingOnly = true;           // --set facing
     uint32_t threads = 0;             // invocations per tile, one of kProjectThreadChoices; 0: autoThreads
+    std::optional<PprTileList> reach;  // dispatch on these tiles only (tiles=1, indirect=1); else on every tile
 };
 
 struct PprProjectOutputs {

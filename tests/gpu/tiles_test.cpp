@@ -6,6 +6,7 @@
 #include "ppr_common/tiles.h"
 #include "ppr_project/ppr_project_pass.hpp"
 #include "ppr_project/project_threads.hpp"
+#include "ppr_reach/ppr_reach_pass.hpp"
 #include "tile_classify/tile_classify_pass.hpp"
 #include "vk/live_objects.hpp"
 #include "scene/stress_scene.hpp"
@@ -128,6 +129,10 @@ TEST(PprTiles, EveryClassificationWidthGivesTheSameImages) {
     expectWidthsChangeNothing({"classify_threads", passes::kClassifyThreadChoices, &passes::TileClassifyPass::autoThreads});
 }
 
+TEST(PprTiles, EveryReachWidthGivesTheSameImages) {
+    expectWidthsChangeNothing({"reach_threads", passes::kReachThreadChoices, &passes::PprReachPass::autoThreads});
+}
+
 TEST(PprTiles, CullingKeepsFewReflectorsPerTile) {
     GpuFixture f(scene::makeStressScene(256));
     const Frame on = render(f, f.camera("overview"), "1", "1");
@@ -143,6 +148,42 @@ TEST(PprTiles, CullingKeepsFewReflectorsPerTile) {
     const Frame off = render(f, f.camera("overview"), "0", "1");
     ASSERT_TRUE(off.capture.pprStats);
     EXPECT_EQ(off.capture.pprStats->reflectorTilePairs, unculled);
+    EXPECT_EQ(f.ctx->validationErrors(), 0u);
+}
+
+// With culling and indirect dispatch the projection runs only on the tiles the reach pass lists:
+// with few reflectors exactly those left with a survivor, with many (one merged rectangle per
+// plane) a superset of them. The counts and the per-tile survivors (debug=tiles) are those of the
+// whole-screen dispatch.
+void expectReachListsTheTilesWithSurvivors(GpuFixture& f, const std::string& camera, bool exact) {
+    const scene::CameraPose pose = f.camera(camera);
+    const Frame listed = render(f, pose, "1", "1"), everyTile = render(f, pose, "1", "0");
+    ASSERT_TRUE(listed.capture.pprStats && everyTile.capture.pprStats);
+    const gpu::PprFrameStats &l = *listed.capture.pprStats, &e = *everyTile.capture.pprStats;
+    const uint32_t tiles = gpu::pprTilesCovering(kSize.width) * gpu::pprTilesCovering(kSize.height);
+    std::printf("%s: %u tiles, %u with content, %u with survivors, %u projected\n", camera.c_str(), tiles, l.tilesWithContent,
+                l.tilesWithSurvivors, l.tilesProjected);
+    EXPECT_EQ(e.tilesProjected, tiles) << camera;
+    EXPECT_EQ(l.tilesWithContent, e.tilesWithContent) << camera;
+    EXPECT_EQ(l.tilesWithSurvivors, e.tilesWithSurvivors) << camera;
+    EXPECT_EQ(l.reflectorTilePairs, e.reflectorTilePairs) << camera;
+    EXPECT_EQ(l.occluderTilePairs, e.occluderTilePairs) << camera;
+    EXPECT_GT(l.tilesWithSurvivors, 0u) << camera;
+    if (exact) EXPECT_EQ(l.tilesProjected, l.tilesWithSurvivors) << camera;
+    else EXPECT_GE(l.tilesProjected, l.tilesWithSurvivors) << camera;
+    EXPECT_LT(l.tilesProjected, l.tilesWithContent) << camera << ": some tiles with geometry reflect in nothing";
+    EXPECT_TRUE(identical(render(f, pose, "1", "1", "tiles").reflection, render(f, pose, "1", "0", "tiles").reflection))
+        << camera << ": the per-tile survivor counts differ";
+}
+
+TEST(PprTiles, ProjectionRunsOnlyWhereAReflectorCanBeReached) {
+    {
+        GpuFixture f;  // 15 reflectors: tested one by one
+        for (const char* camera : {"overview", "stairs", "normalmap"}) expectReachListsTheTilesWithSurvivors(f, camera, true);
+        EXPECT_EQ(f.ctx->validationErrors(), 0u);
+    }
+    GpuFixture f(scene::makeStressScene(256));  // beyond kPprReachPerReflector: one rectangle per plane
+    expectReachListsTheTilesWithSurvivors(f, "reflective_25", false);
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
 

@@ -62,6 +62,10 @@ TEST(Settings, DecodesIntoTypedFields) {
     EXPECT_EQ(s.get("project_threads"), "128");
     s.apply("project_threads=auto");
     EXPECT_EQ(v.ppr.projectThreads, 0u);
+    EXPECT_EQ(v.ppr.reachThreads, 0u);
+    s.apply("reach_threads=16");
+    EXPECT_EQ(v.ppr.reachThreads, 16u);
+    EXPECT_EQ(s.get("reach_threads"), "16");
     EXPECT_EQ(v.tiles.classifyThreads, 0u);
     s.apply("classify_threads=64");
     EXPECT_EQ(v.tiles.classifyThreads, 64u);

@@ -1,0 +1,160 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "common/bindings.glsl"
+#include "common/reflector_data.h"
+#include "ppr_common/tile_culling.h"
+#include "ppr_common/tiles.h"
+#include "ppr_reach/ppr_reach.h"
+
+// Before the projection pass, with per-tile culling and indirect dispatch: which screen tiles can be
+// reflected at all? kLanes invocations per tile find the world-space box of the tile's pixels, as the
+// projection pass does, and run the first test of its culling on it: with up to
+// kPprReachPerReflector reflectors reflector by reflector, beyond that per cull plane against the
+// union of the plane's rectangles. A tile that fails has no survivor in the projection's culling, so
+// it would write nothing there: the projection is not dispatched for it. The rest are listed, in no
+// particular order, for the projection's indirect dispatch. Left-out tiles get a survivor count of 0
+// (debug=tiles).
+// kLanes invocations per tile (a specialization constant, --set reach_threads: by device, ppr_reach.h),
+// kPprReachGroupSize / kLanes tiles per workgroup, the tiles in row order.
+layout(local_size_x = kPprReachGroupSize) in;
+layout(constant_id = 0) const uint kLanes = kPprReachThreads;  // PprReachPass always specialises it
+layout(set = 0, binding = 1) uniform sampler2D depthTex;
+layout(set = 0, binding = 2, scalar) readonly buffer Reflectors { ReflectorData reflectors[]; };
+layout(set = 0, binding = 3, scalar) readonly buffer Bounds { PprReflectorBounds bounds[]; };
+layout(set = 0, binding = 4, scalar) readonly buffer PlaneLeaders { uint planeLeaders[]; };
+layout(set = 0, binding = 5, scalar) buffer Args { TileDispatchArgs args; };
+layout(set = 0, binding = 6, scalar) writeonly buffer ReachTiles { uint reachTiles[]; };
+layout(set = 0, binding = 7, scalar) writeonly buffer TileSurvivors { uint tileSurvivors[]; };
+layout(set = 0, binding = 8, scalar) buffer Stats { PprFrameStats stats; };
+layout(push_constant, scalar) uniform Push { PprReachPush pc; };
+
+const uint kTilesPerGroup = kPprReachGroupSize / kLanes;
+
+// Per cull plane, the union of its reflecting reflectors' screen rectangles (empty: lo > hi).
+shared uint planeLoX[kPprMaxCullPlanes], planeLoY[kPprMaxCullPlanes], planeHiX[kPprMaxCullPlanes], planeHiY[kPprMaxCullPlanes];
+shared uint everyTile;  // a reflector beyond the plane tables is judged on its own rectangle: it keeps every tile
+// Per tile of the workgroup: its box as order-preserving uints, and whether a lane found it reachable.
+shared uvec3 tileLo[kTilesPerGroup], tileHi[kTilesPerGroup];
+shared uint tileReached[kTilesPerGroup];
+
+uint orderedFromFloat(float f) {
+    uint u = floatBitsToUint(f);
+    return (u & 0x80000000u) != 0u ? ~u : u | 0x80000000u;
+}
+float floatFromOrdered(uint u) { return uintBitsToFloat((u & 0x80000000u) != 0u ? u & 0x7FFFFFFFu : ~u); }
+vec3 floatFromOrdered(uvec3 u) { return vec3(floatFromOrdered(u.x), floatFromOrdered(u.y), floatFromOrdered(u.z)); }
+
+void gatherPlaneRectangles() {
+    uint lid = gl_LocalInvocationIndex;
+    if (lid == 0u) everyTile = 0u;
+    for (uint p = lid; p < pc.cullPlaneCount; p += kPprReachGroupSize) {
+        planeLoX[p] = planeLoY[p] = 0xFFFFu;
+        planeHiX[p] = planeHiY[p] = 0u;
+    }
+    barrier();
+    for (uint i = lid; i < pc.reflectorCount; i += kPprReachGroupSize) {
+        PprReflectorBounds b = bounds[i];
+        // As in the projection's culling: a reflector the camera sees from behind keeps nothing, nor
+        // does an empty rectangle (it overlaps nothing).
+        if (b.reflects == 0u || !pprRectsOverlap(b.rect, b.rect)) continue;
+        uint plane = reflectors[i].cullPlane;
+        if (plane == kPprNoCullPlane) {
+            everyTile = 1u;
+            continue;
+        }
+        atomicMin(planeLoX[plane], b.rect.x & 0xFFFFu);
+        atomicMin(planeLoY[plane], b.rect.x >> 16u);
+        atomicMax(planeHiX[plane], b.rect.y & 0xFFFFu);
+        atomicMax(planeHiY[plane], b.rect.y >> 16u);
+    }
+}
+
+// The projection's first culling test, reflector by reflector (this lane's share: every kLanes-th):
+// does the tile's mirror image in the reflector's plane meet its screen rectangle, and its hit region
+// the reflector's rectangle?
+bool reachesAReflector(vec3 boxLo, vec3 boxHi, uint lane) {
+    uint plane = kPprNoCullPlane;  // the plane `mirrored` and the hit region belong to
+    uvec2 mirrored = uvec2(kPprEmptyRectLo, kPprEmptyRectHi);
+    vec3 hitLo = vec3(0.0), hitHi = vec3(0.0);
+    for (uint i = lane; i < pc.reflectorCount; i += kLanes) {
+        PprReflectorBounds b = bounds[i];
+        if (b.reflects == 0u) continue;
+        ReflectorData r = reflectors[i];
+        if (r.cullPlane == kPprNoCullPlane) {  // judged on its own rectangle, as the projection does
+            if (pprRectsOverlap(b.rect, b.rect)) return true;
+            continue;
+        }
+        if (r.cullPlane != plane) {  // coplanar reflectors are mostly neighbours: mirror once per run
+            plane = r.cullPlane;
+            ReflectorData leader = reflectors[planeLeaders[plane]];
+            mirrored = pprTileReflectedRect(boxLo, boxHi, leader.normal, leader.center, frame.viewProj, frame.screenSize);
+            pprTileHitRegion(boxLo, boxHi, leader.normal, leader.center, frame.cameraPos.xyz, hitLo, hitHi);
+        }
+        if (pprRectsOverlap(mirrored, b.rect) && pprRectangleMeetsBox(r, hitLo, hitHi)) return true;
+    }
+    return false;
+}
+
+// The same with each plane's reflectors merged into one rectangle (gatherPlaneRectangles): coarser,
+// but its cost per tile does not grow with the reflector count.
+bool reachesAPlane(vec3 boxLo, vec3 boxHi, uint lane) {
+    if (everyTile != 0u) return true;
+    for (uint plane = lane; plane < pc.cullPlaneCount; plane += kLanes) {
+        if (planeLoX[plane] > planeHiX[plane]) continue;  // no reflecting rectangle in this plane
+        ReflectorData leader = reflectors[planeLeaders[plane]];
+        uvec2 mirrored = pprTileReflectedRect(boxLo, boxHi, leader.normal, leader.center, frame.viewProj, frame.screenSize);
+        uvec2 planeRect = uvec2(planeLoX[plane] | (planeLoY[plane] << 16u), planeHiX[plane] | (planeHiY[plane] << 16u));
+        if (pprRectsOverlap(mirrored, planeRect)) return true;
+    }
+    return false;
+}
+
+void main() {
+    uint lid = gl_LocalInvocationIndex, slot = lid / kLanes, lane = lid % kLanes;
+    uint index = gl_WorkGroupID.x * kTilesPerGroup + slot;
+    bool inside = index < pc.tilesX * pc.tilesY;
+    uvec2 tile = uvec2(index % pc.tilesX, index / pc.tilesX);
+    if (lane == 0u) {
+        tileLo[slot] = uvec3(0xFFFFFFFFu);
+        tileHi[slot] = uvec3(0u);
+        tileReached[slot] = 0u;
+    }
+    if (pc.reflectorCount > kPprReachPerReflector) gatherPlaneRectangles();  // uniform: the push constant
+    barrier();
+
+    // The box of the tile's points, exactly as the projection pass reduces it (the same positions).
+    if (inside) {
+        uvec3 lo = uvec3(0xFFFFFFFFu), hi = uvec3(0u);
+        ivec2 origin = ivec2(tile) * int(kPprTileSize);
+        for (uint k = lane; k < kPprTileSize * kPprTileSize; k += kLanes) {
+            ivec2 pix = origin + ivec2(k % kPprTileSize, k / kPprTileSize);
+            if (any(greaterThanEqual(pix, ivec2(frame.screenSize)))) continue;
+            float depth = texelFetch(depthTex, pix, 0).r;
+            if (depth <= 0.0) continue;  // sky
+            vec3 p = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depth);
+            uvec3 ordered = uvec3(orderedFromFloat(p.x), orderedFromFloat(p.y), orderedFromFloat(p.z));
+            lo = min(lo, ordered);
+            hi = max(hi, ordered);
+        }
+        if (lo.x <= hi.x) {
+            atomicMin(tileLo[slot].x, lo.x);
+            atomicMin(tileLo[slot].y, lo.y);
+            atomicMin(tileLo[slot].z, lo.z);
+            atomicMax(tileHi[slot].x, hi.x);
+            atomicMax(tileHi[slot].y, hi.y);
+            atomicMax(tileHi[slot].z, hi.z);
+        }
+    }
+    barrier();
+    bool hasContent = inside && tileLo[slot].x <= tileHi[slot].x;
+    if (hasContent) {
+        vec3 boxLo = floatFromOrdered(tileLo[slot]), boxHi = floatFromOrdered(tileHi[slot]);
+        bool reached = pc.reflectorCount <= kPprReachPerReflector ? reachesAReflector(boxLo, boxHi, lane) : reachesAPlane(boxLo, boxHi, lane);
+        if (reached) atomicOr(tileReached[slot], 1u);
+    }
+    barrier();
+    if (lane != 0u || !inside) return;
+    if (hasContent) atomicAdd(stats.tilesWithContent, 1u);
+    if (tileReached[slot] != 0u) reachTiles[atomicAdd(args.x, 1u)] = pprPackTile(tile);
+    else tileSurvivors[index] = 0u;
+}

@@ -1,0 +1,29 @@
+// PPR reach pass constants (host/device shared): which screen tiles the projection pass runs on.
+#ifndef PPR_REACH_H
+#define PPR_REACH_H
+#include "shader/shared.h"
+
+// Invocations per workgroup; kPprReachGroupSize / (invocations per tile) tiles each. With many
+// reflectors each workgroup first gathers the cull planes' rectangles, a cost per workgroup, so a
+// workgroup covers several tiles.
+PPR_CONST(uint, kPprReachGroupSize, 64u)
+// Invocations per tile (the shader's specialization constant; --set reach_threads=auto picks by device
+// type): one on a CPU device, where invocations are SIMD lanes over neighbouring tiles; on a GPU a
+// thread looping over a tile's 256 pixels leaves it idle, so several share the tile.
+PPR_CONST(uint, kPprReachThreads, 1u)
+PPR_CONST(uint, kPprReachThreadsGpu, 16u)
+// Up to this many reflectors each tile tests every one (the projection's own first test, so exactly
+// the tiles with survivors are listed); beyond, one merged rectangle per cull plane.
+PPR_CONST(uint, kPprReachPerReflector, 64u)
+
+PPR_BEGIN
+struct PprReachPush {
+    uint reflectorCount;  // reflectors projected (≤ kPprMaxReflectors)
+    uint cullPlaneCount;  // ≤ kPprMaxCullPlanes
+    uint tilesX;
+    uint tilesY;
+};
+PPR_END
+PPR_SIZE_CHECK(PprReachPush, 16);
+
+#endif

@@ -1,0 +1,66 @@
+#include "ppr_reach/ppr_reach_pass.hpp"
+
+#include "common/compute_pass.hpp"
+#include "ppr_common/tile_culling.h"
+#include "ppr_common/tiles.h"
+#include "ppr_reach/ppr_reach.h"
+#include "ppr_reach_comp.h"
+
+namespace ppr::passes {
+
+namespace {
+constexpr WorkgroupWidths kWidths{kReachThreadChoices, gpu::kPprReachThreads, gpu::kPprReachThreadsGpu};
+
+static_assert(kWidths.valid(gpu::kPprTileSize * gpu::kPprTileSize, 1u) && gpu::kPprReachGroupSize % kReachThreadChoices.back() == 0,
+              "ppr.reach's invocations per tile must divide the tile and the workgroup and hold the defaults");
+
+shader::PipelineLayoutDesc reachLayout() {
+    shader::PipelineLayoutDesc layout;
+    layout.pushConstantBytes = sizeof(gpu::PprReachPush);
+    return layout;
+}
+}  // namespace
+
+PprReachPass::PprReachPass(const vk::Context& ctx)
+    : ctx_(ctx), pipelines_(ctx, PPR_SPIRV(ppr_reach_comp), reachLayout(), "ppr.reach", kWidths) {}
+
+uint32_t PprReachPass::autoThreads(const vk::DeviceInfo& device) { return kWidths.defaultFor(device); }
+
+PprTileList PprReachPass::add(graph::RenderGraph& g, const FrameInputs& in, const ReflectorBinding& r, const PprReachInputs& inputs) const {
+    const uint32_t tileCount = inputs.tilesX * inputs.tilesY;
+    // An empty list (x = 0, y = z = 1); vkCmdUpdateBuffer is a transfer command.
+    struct Clear {
+        graph::BufferHandle args;
+    };
+    const graph::BufferHandle args = g.createBuffer("ppr.reach.args", {sizeof(gpu::TileDispatchArgs)});
+    const Clear& cleared = g.addPass<Clear>(
+        "ppr.reach.clear", graph::QueueKind::Transfer,
+        [&](graph::PassBuilder& b, Clear& d) { d.args = b.transferDst(args); },
+        [](const Clear& d, graph::PassContext& pc) {
+            const gpu::TileDispatchArgs empty{0u, 1u, 1u};
+            vkCmdUpdateBuffer(pc.cmd(), pc.buffer(d.args), 0, sizeof(empty), &empty);
+        });
+
+    gpu::PprReachPush push{};
+    push.reflectorCount = r.count;
+    push.cullPlaneCount = r.cullPlanes;
+    push.tilesX = inputs.tilesX;
+    push.tilesY = inputs.tilesY;
+    PprTileList out;
+    const uint32_t lanes = inputs.threads == 0 ? kWidths.defaultFor(ctx_.info()) : inputs.threads;
+    ComputePass(g, ctx_, "ppr.reach", pipelines_.get(lanes))
+        .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
+        .sampled(inputs.depth, in.samplers->nearestClamp)
+        .hostStorage(r.reflectors)
+        .storageRead(inputs.bounds)
+        .hostStorage(r.planeLeaders)
+        .storageReadWrite(cleared.args, &out.args)
+        .storageWrite(g.createBuffer("ppr.reach.tiles", {sizeof(uint32_t) * tileCount}), &out.tiles)
+        .storageWrite(g.createBuffer("ppr.tile_survivors", {sizeof(uint32_t) * tileCount}), &out.tileSurvivors)
+        .storageReadWrite(inputs.stats, &out.stats)
+        .push(push)
+        .dispatch({tileCount * lanes, 1}, gpu::kPprReachGroupSize);
+    return out;
+}
+
+}  // namespace ppr::passes
