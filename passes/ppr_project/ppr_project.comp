@@ -5,6 +5,7 @@
 #include "common/bindings.glsl"
 #include "common/reflector_data.h"
 #include "ppr_common/encoding.h"
+#include "ppr_common/ordered_float.glsl"
 #include "ppr_common/tile_culling.h"
 #include "ppr_common/tiles.h"
 #include "ppr_project/ppr_project.h"
@@ -54,12 +55,6 @@ shared uint scatteredSubgroups;           // 1 if some subgroup is not a consecu
 shared uint survivorCount, occluderCount;
 shared uint reachLoX, reachLoY, reachHiX, reachHiY;  // pixels the survivors can write to
 
-uint orderedFromFloat(float f) {
-    uint u = floatBitsToUint(f);
-    return (u & 0x80000000u) != 0u ? ~u : u | 0x80000000u;
-}
-float floatFromOrdered(uint u) { return uintBitsToFloat((u & 0x80000000u) != 0u ? u & 0x7FFFFFFFu : ~u); }
-vec3 floatFromOrdered(uvec3 u) { return vec3(floatFromOrdered(u.x), floatFromOrdered(u.y), floatFromOrdered(u.z)); }
 
 uint unpack16(uint word, uint slot) { return (word >> (16u * (slot & 1u))) & 0xFFFFu; }
 uint survivorAt(uint k) { return pc.cullTiles == 0u ? projectionOrder[k] : unpack16(survivorWords[k >> 1u], k); }
@@ -278,7 +273,7 @@ void main() {
         if (depth <= 0.0) continue;  // sky: no position to mirror
         vec3 p = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depth);
         points[j] = vec4(p, 1.0);
-        uvec3 ordered = uvec3(orderedFromFloat(p.x), orderedFromFloat(p.y), orderedFromFloat(p.z));
+        uvec3 ordered = orderedFromFloat(p);
         lo = min(lo, ordered);
         hi = max(hi, ordered);
     }

@@ -2,6 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "common/bindings.glsl"
 #include "common/reflector_data.h"
+#include "ppr_common/ordered_float.glsl"
 #include "ppr_common/tile_culling.h"
 #include "ppr_common/tiles.h"
 #include "ppr_reach/ppr_reach.h"
@@ -15,7 +16,8 @@
 // particular order, for the projection's indirect dispatch. Left-out tiles get a survivor count of 0
 // (debug=tiles).
 // kLanes invocations per tile (a specialization constant, --set reach_threads: by device, ppr_reach.h),
-// kPprReachGroupSize / kLanes tiles per workgroup, the tiles in row order.
+// kPprReachGroupSize / kLanes tiles per workgroup, the tiles in row order (the workgroups too, in
+// rows of kPprReachGroupsPerRow).
 layout(local_size_x = kPprReachGroupSize) in;
 layout(constant_id = 0) const uint kLanes = kPprReachThreads;  // PprReachPass always specialises it
 layout(set = 0, binding = 1) uniform sampler2D depthTex;
@@ -36,13 +38,6 @@ shared uint everyTile;  // a reflector beyond the plane tables is judged on its 
 // Per tile of the workgroup: its box as order-preserving uints, and whether a lane found it reachable.
 shared uvec3 tileLo[kTilesPerGroup], tileHi[kTilesPerGroup];
 shared uint tileReached[kTilesPerGroup];
-
-uint orderedFromFloat(float f) {
-    uint u = floatBitsToUint(f);
-    return (u & 0x80000000u) != 0u ? ~u : u | 0x80000000u;
-}
-float floatFromOrdered(uint u) { return uintBitsToFloat((u & 0x80000000u) != 0u ? u & 0x7FFFFFFFu : ~u); }
-vec3 floatFromOrdered(uvec3 u) { return vec3(floatFromOrdered(u.x), floatFromOrdered(u.y), floatFromOrdered(u.z)); }
 
 void gatherPlaneRectangles() {
     uint lid = gl_LocalInvocationIndex;
@@ -111,7 +106,8 @@ bool reachesAPlane(vec3 boxLo, vec3 boxHi, uint lane) {
 
 void main() {
     uint lid = gl_LocalInvocationIndex, slot = lid / kLanes, lane = lid % kLanes;
-    uint index = gl_WorkGroupID.x * kTilesPerGroup + slot;
+    uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;  // rows of workgroups (PprReachPass)
+    uint index = group * kTilesPerGroup + slot;
     bool inside = index < pc.tilesX * pc.tilesY;
     uvec2 tile = uvec2(index % pc.tilesX, index / pc.tilesX);
     if (lane == 0u) {
@@ -132,7 +128,7 @@ void main() {
             float depth = texelFetch(depthTex, pix, 0).r;
             if (depth <= 0.0) continue;  // sky
             vec3 p = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depth);
-            uvec3 ordered = uvec3(orderedFromFloat(p.x), orderedFromFloat(p.y), orderedFromFloat(p.z));
+            uvec3 ordered = orderedFromFloat(p);
             lo = min(lo, ordered);
             hi = max(hi, ordered);
         }

@@ -7,6 +7,7 @@
 // reflectors each workgroup first gathers the cull planes' rectangles, a cost per workgroup, so a
 // workgroup covers several tiles.
 PPR_CONST(uint, kPprReachGroupSize, 64u)
+PPR_CONST(uint, kPprReachGroupsPerRow, 1024u)  // workgroups per row of the dispatch; the tiles run on across rows
 // Invocations per tile (the shader's specialization constant; --set reach_threads=auto picks by device
 // type): one on a CPU device, where invocations are SIMD lanes over neighbouring tiles; on a GPU a
 // thread looping over a tile's 256 pixels leaves it idle, so several share the tile.

@@ -3,6 +3,7 @@
 // renders with a warning. Validation + synchronization validation on throughout.
 #include "gpu_test_util.hpp"
 #include "techniques/technique_table.hpp"
+#include "ppr_common/encoding.h"
 #include "ppr_common/tiles.h"
 #include "ppr_project/ppr_project_pass.hpp"
 #include "ppr_project/project_threads.hpp"
@@ -184,6 +185,22 @@ TEST(PprTiles, ProjectionRunsOnlyWhereAReflectorCanBeReached) {
     }
     GpuFixture f(scene::makeStressScene(256));  // beyond kPprReachPerReflector: one rectangle per plane
     expectReachListsTheTilesWithSurvivors(f, "reflective_25", false);
+    EXPECT_EQ(f.ctx->validationErrors(), 0u);
+}
+
+// PPR's largest frame (4096² = 65 536 tiles) at one workgroup per tile needs more workgroups than a
+// dispatch row holds on every device: the reach pass lays them out in rows and still lists exactly
+// the tiles with survivors.
+TEST(PprTiles, ReachCoversTheLargestFrameAtOneTilePerWorkgroup) {
+    GpuFixture f;
+    f.headless->setTechnique("ppr");
+    f.headless->settings().set("reach_threads", std::to_string(passes::kReachThreadChoices.back()));
+    const app::CaptureResult r = f.headless->capture(f.camera("overview"), {gpu::kPprMaxExtent, gpu::kPprMaxExtent}, 1, false, false);
+    ASSERT_TRUE(r.pprStats);
+    std::printf("4096x4096: %u with content, %u with survivors, %u projected\n", r.pprStats->tilesWithContent, r.pprStats->tilesWithSurvivors,
+                r.pprStats->tilesProjected);
+    EXPECT_GT(r.pprStats->tilesWithSurvivors, 0u);
+    EXPECT_EQ(r.pprStats->tilesProjected, r.pprStats->tilesWithSurvivors);
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
 
