@@ -16,11 +16,10 @@
 // One workgroup per screen tile: every tile, or with culling and indirect dispatch only the tiles the
 // reach pass listed (ppr_reach.comp: the rest would keep no reflector). Each invocation reconstructs
 // the world positions of its pixels once, keeps them in registers and reduces their bounds (one
-// shared atomic per subgroup and value). With
-// culling on, the workgroup then tests every reflector against the tile's bounds in parallel
-// (ppr_common/tile_culling.h) and keeps, in shared memory and in projection order, the survivors and
-// the possible occluders; each pixel then runs the per-reflector logic over those lists only. With
-// culling off the lists are all reflectors.
+// shared atomic per subgroup and value). With culling on, the workgroup then tests every reflector
+// against the tile's bounds in parallel (ppr_common/tile_culling.h) and keeps, in shared memory and
+// in projection order, the survivors and the possible occluders; each pixel then runs the
+// per-reflector logic over those lists only. With culling off the lists are all reflectors.
 // kThreads invocations per tile, each projecting every kThreads-th pixel: a specialization constant
 // (--set project_threads), since the best count depends on the device (ppr_project.h).
 layout(local_size_x_id = 0) in;
@@ -54,7 +53,6 @@ shared uint subgroupSurvivors[kThreads];  // their sums per subgroup (gl_Subgrou
 shared uint scatteredSubgroups;           // 1 if some subgroup is not a consecutive run of invocations
 shared uint survivorCount, occluderCount;
 shared uint reachLoX, reachLoY, reachHiX, reachHiY;  // pixels the survivors can write to
-
 
 uint unpack16(uint word, uint slot) { return (word >> (16u * (slot & 1u))) & 0xFFFFu; }
 uint survivorAt(uint k) { return pc.cullTiles == 0u ? projectionOrder[k] : unpack16(survivorWords[k >> 1u], k); }
