@@ -11,8 +11,10 @@ WidthPipelines::WidthPipelines(const vk::Context& ctx, shader::Spirv spirv, shad
     get(0);
 }
 
+uint32_t WidthPipelines::resolve(uint32_t asked) const { return asked == 0 ? widths_.defaultFor(ctx_.info()) : asked; }
+
 const shader::Pipeline& WidthPipelines::get(uint32_t width) const {
-    if (width == 0) width = widths_.defaultFor(ctx_.info());
+    width = resolve(width);
     if (std::find(widths_.offered.begin(), widths_.offered.end(), width) == widths_.offered.end())
         throw std::invalid_argument(name_ + ": " + std::to_string(width) + " invocations per workgroup is not offered");
     auto it = pipelines_.find(width);

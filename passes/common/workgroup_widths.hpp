@@ -34,6 +34,8 @@ class WidthPipelines {
 public:
     WidthPipelines(const vk::Context& ctx, shader::Spirv spirv, shader::PipelineLayoutDesc layout, std::string name,
                    WorkgroupWidths widths);
+    // The width `asked` stands for: itself, or for 0 the device's default.
+    uint32_t resolve(uint32_t asked) const;
     // The pipeline for `width` invocations per workgroup (0: the device's default); throws for a width not offered.
     const shader::Pipeline& get(uint32_t width) const;
 

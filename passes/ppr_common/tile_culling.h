@@ -205,6 +205,18 @@ PPR_INLINE bool pprRectangleMeetsBox(ReflectorData r, vec3 lo, vec3 hi) {
     vec3 extent = abs(r.tangent) * r.halfExtentU + abs(r.bitangent) * r.halfExtentV;
     return all(lessThanEqual(r.center - extent, hi)) && all(lessThanEqual(lo, r.center + extent));
 }
+
+// The culling's per-reflector verdict for a tile (the projection's survivor list, the reach pass's
+// tile list): the camera may see the reflecting side, the tile mirrored in the reflector's cull plane
+// lands on its screen rectangle (`mirrored`: pprTileReflectedRect) and the tile's hit region in that
+// plane (pprTileHitRegion) meets the rectangle. A reflector beyond the plane tables
+// (kPprNoCullPlane; `mirrored` and the hit region are then not read) is kept wherever its own
+// rectangle is on screen.
+PPR_INLINE bool pprTileMayReachReflector(ReflectorData r, PprReflectorBounds b, uvec2 mirrored, vec3 hitLo, vec3 hitHi) {
+    if (b.reflects == 0u) return false;
+    if (r.cullPlane == kPprNoCullPlane) return pprRectsOverlap(b.rect, b.rect);
+    return pprRectsOverlap(mirrored, b.rect) && pprRectangleMeetsBox(r, hitLo, hitHi);
+}
 PPR_END
 PPR_SIZE_CHECK(PprReflectorBounds, 16);
 

@@ -134,9 +134,9 @@ void cullReflectors(vec3 lo, vec3 hi) {
         ReflectorData r = reflectors[i];
         // Reflectors beyond the per-plane tables are judged on their own rectangle alone.
         bool tabled = r.cullPlane != kPprNoCullPlane;
-        uvec2 mirrored = tabled ? planeRect[r.cullPlane] : b.rect;
-        if (!pprRectsOverlap(mirrored, b.rect)) continue;
-        if (tabled && !pprRectangleMeetsBox(r, hitLo[r.cullPlane], hitHi[r.cullPlane])) continue;
+        uint plane = tabled ? r.cullPlane : 0u;  // untabled: the tables are not read by the verdict
+        uvec2 mirrored = tabled ? planeRect[plane] : b.rect;
+        if (!pprTileMayReachReflector(r, b, mirrored, hitLo[plane], hitHi[plane])) continue;
         verdicts |= 1u << (k - first);
         // It can only write where both rectangles overlap.
         reachMine = uvec4(min(reachMine.xy, uvec2(max(mirrored.x & 0xFFFFu, b.rect.x & 0xFFFFu), max(mirrored.x >> 16u, b.rect.x >> 16u))),

@@ -75,17 +75,14 @@ bool reachesAReflector(vec3 boxLo, vec3 boxHi, uint lane) {
         PprReflectorBounds b = bounds[i];
         if (b.reflects == 0u) continue;
         ReflectorData r = reflectors[i];
-        if (r.cullPlane == kPprNoCullPlane) {  // judged on its own rectangle, as the projection does
-            if (pprRectsOverlap(b.rect, b.rect)) return true;
-            continue;
-        }
-        if (r.cullPlane != plane) {  // coplanar reflectors are mostly neighbours: mirror once per run
+        // Coplanar reflectors are mostly neighbours: mirror once per run of one plane.
+        if (r.cullPlane != kPprNoCullPlane && r.cullPlane != plane) {
             plane = r.cullPlane;
             ReflectorData leader = reflectors[planeLeaders[plane]];
             mirrored = pprTileReflectedRect(boxLo, boxHi, leader.normal, leader.center, frame.viewProj, frame.screenSize);
             pprTileHitRegion(boxLo, boxHi, leader.normal, leader.center, frame.cameraPos.xyz, hitLo, hitHi);
         }
-        if (pprRectsOverlap(mirrored, b.rect) && pprRectangleMeetsBox(r, hitLo, hitHi)) return true;
+        if (pprTileMayReachReflector(r, b, mirrored, hitLo, hitHi)) return true;
     }
     return false;
 }

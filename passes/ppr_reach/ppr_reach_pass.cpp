@@ -58,7 +58,7 @@ PprTileList PprReachPass::add(graph::RenderGraph& g, const FrameInputs& in, cons
     push.tilesX = inputs.tilesX;
     push.tilesY = inputs.tilesY;
     PprTileList out;
-    const uint32_t lanes = inputs.threads == 0 ? kWidths.defaultFor(ctx_.info()) : inputs.threads;
+    const uint32_t lanes = pipelines_.resolve(inputs.threads);
     ComputePass(g, ctx_, "ppr.reach", pipelines_.get(lanes))
         .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
         .sampled(inputs.depth, in.samplers->nearestClamp)

@@ -149,18 +149,24 @@ std::optional<uvec2> reflectedPixel(const View& v, const Rect& r, vec3 p) {
 // What the cull decides for reflector r and a tile box, with the cull plane through planePoint
 // (r's own centre, or a coplanar leader's).
 struct CullVerdict {
+    ReflectorData reflector;  // in cull plane 0 (the plane tables' case)
+    ppr::gpu::PprReflectorBounds bounds;
     uvec2 tileRect, reflectorRect;
     vec3 hitLo, hitHi;  // the tile's hit region in the plane
     bool reflects;
     bool meetsHitRegion;
-    bool kept() const { return reflects && ppr::gpu::pprRectsOverlap(tileRect, reflectorRect) && meetsHitRegion; }
+    // The verdict both shaders use (the projection's survivors, the reach pass's tiles).
+    bool kept() const { return ppr::gpu::pprTileMayReachReflector(reflector, bounds, tileRect, hitLo, hitHi); }
 };
 
 // The three tests of ppr_project.comp's cullReflectors, as the bounds pass and the tile compute them.
 CullVerdict cull(const View& v, const Rect& r, vec3 lo, vec3 hi, vec3 planePoint) {
     CullVerdict c;
+    c.reflector = toGpu(r);
+    c.reflector.cullPlane = 0u;
     c.tileRect = ppr::gpu::pprTileReflectedRect(lo, hi, r.normal, planePoint, v.viewProj, v.screen);
     const ppr::gpu::PprReflectorBounds b = ppr::gpu::pprReflectorBounds(toGpu(r), v.viewProj, v.eye, v.screen);
+    c.bounds = b;
     c.reflectorRect = b.rect;
     c.reflects = b.reflects != 0u;
     ppr::gpu::pprTileHitRegion(lo, hi, r.normal, planePoint, v.eye, c.hitLo, c.hitHi);
@@ -511,6 +517,29 @@ ppr::gpu::PprScreenBounds bounds(vec2 lo, vec2 hi) {
     b.lo = lo;
     b.hi = hi;
     return b;
+}
+
+// The per-reflector verdict's special cases: a reflector seen from behind keeps no tile; one beyond
+// the plane tables is judged on its own screen rectangle, whatever the tile's mirrored rectangle.
+TEST(PprTileCulling, VerdictDropsBackFacingAndJudgesUntabledOnTheirRectangle) {
+    ReflectorData r{};
+    r.cullPlane = 0u;
+    const uvec2 onScreen{10u | (20u << 16u), 30u | (40u << 16u)};
+    const uvec2 empty{ppr::gpu::kPprEmptyRectLo, ppr::gpu::kPprEmptyRectHi};
+    const vec3 everywhereLo(-1e30f), everywhereHi(1e30f);
+    ppr::gpu::PprReflectorBounds b{};
+    b.rect = onScreen;
+    b.reflects = 1u;
+    EXPECT_TRUE(ppr::gpu::pprTileMayReachReflector(r, b, onScreen, everywhereLo, everywhereHi));
+    EXPECT_FALSE(ppr::gpu::pprTileMayReachReflector(r, b, empty, everywhereLo, everywhereHi));
+    EXPECT_FALSE(ppr::gpu::pprTileMayReachReflector(r, b, onScreen, vec3(1e29f), vec3(1e30f)));  // hit region misses it
+    b.reflects = 0u;
+    EXPECT_FALSE(ppr::gpu::pprTileMayReachReflector(r, b, onScreen, everywhereLo, everywhereHi));
+    b.reflects = 1u;
+    r.cullPlane = ppr::gpu::kPprNoCullPlane;
+    EXPECT_TRUE(ppr::gpu::pprTileMayReachReflector(r, b, empty, vec3(1e29f), vec3(1e30f)));
+    b.rect = empty;
+    EXPECT_FALSE(ppr::gpu::pprTileMayReachReflector(r, b, onScreen, everywhereLo, everywhereHi));
 }
 
 TEST(PprTileCulling, RectPackingEdgeCases) {
