@@ -40,6 +40,9 @@ vec3 reduceColorBleeding(vec3 filtered, vec3 unfiltered) {
 // that wide) and takes the nearer side of the direction whose two sides agree best, i.e. the layer it
 // lies inside; with no direction holding data on both sides, the nearest layer around it, as the
 // slides do. The diagonals were measured too: slower, and no better (docs/quality.md).
+// A nearer layer magnified several times lands its samples 2-3 texels apart, and the far layer shows
+// in the gaps with only one side enclosed; see enclosedHoleSource for how those texels are told from
+// an outline and filled between the layer's samples.
 struct PprSide {
     uint value;    // the shortest offset within reach on this side (kPprClearValue: none)
     ivec2 texel;
@@ -59,12 +62,28 @@ PprSide nearestOnSide(ivec2 texel, ivec2 step, int reach) {
     return side;
 }
 
-ivec2 enclosedHoleSource(ivec2 texel, uint v0) {
+// Where a texel's reflection comes from: a texel's data (its own or a neighbour's), or a position
+// between two samples of one magnified layer.
+struct PprHoleChoice {
+    ivec2 texel;       // the texel whose data is used
+    bool between;      // a magnified layer's gap: sample at `source` instead
+    vec2 source;       // screen position (pixels) of the filtered sample when `between`
+};
+
+// The screen position a texel's data reflects to its centre: its filtered source.
+vec2 filteredSource(ivec2 texel, uint v, ivec2 origin, vec2 originCentre, float pixelsPerTexel) {
+    return originCentre + vec2(texel - origin) * pixelsPerTexel - fullOffset(v);
+}
+
+PprHoleChoice enclosedHoleSource(ivec2 texel, uint v0, vec2 screenCentre, float pixelsPerTexel) {
     const ivec2 directions[2] = ivec2[2](ivec2(1, 0), ivec2(0, 1));
     bool empty = v0 == kPprClearValue;
     vec2 own = empty ? vec2(0.0) : fullOffset(v0);
+    PprHoleChoice choice;
+    choice.texel = texel;
+    choice.between = false;
+    choice.source = screenCentre;
     uint best = v0;
-    ivec2 bestTexel = texel;
     float bestSpread = 3.4e38;  // empty: how far apart the chosen direction's two sides are
     uint anyBest = kPprClearValue;
     ivec2 anyTexel = texel;
@@ -82,19 +101,39 @@ ivec2 enclosedHoleSource(ivec2 texel, uint v0) {
             if (spread < bestSpread) {
                 bestSpread = spread;
                 best = nearer.value;
-                bestTexel = nearer.texel;
+                choice.texel = nearer.texel;
             }
             continue;
         }
-        if (a.value >= v0 || b.value >= v0) continue;
-        if (distance(own, fullOffset(a.value)) <= kPprHoleMinDistance || distance(own, fullOffset(b.value)) <= kPprHoleMinDistance) continue;
-        if (nearer.value < best) {
-            best = nearer.value;
-            bestTexel = nearer.texel;
+        bool nearA = a.value < v0 && distance(own, fullOffset(a.value)) > kPprHoleMinDistance;
+        bool nearB = b.value < v0 && distance(own, fullOffset(b.value)) > kPprHoleMinDistance;
+        if (nearA && nearB) {
+            if (nearer.value < best) {
+                best = nearer.value;
+                choice.texel = nearer.texel;
+                choice.between = false;
+            }
+            continue;
         }
+        // A nearer layer on one side only: an outline, or a layer magnified so much that its samples
+        // land kPprHoleMagnifiedReach texels apart with the far layer showing between them. It is the
+        // latter when the nearer layer lies further along on the other side too and the two samples
+        // come from neighbouring pixels of the main view: one surface, so this texel lies on it.
+        if (nearA == nearB || choice.between || best != v0) continue;
+        PprSide near = nearA ? a : b;
+        ivec2 away = nearA ? -directions[k] : directions[k];
+        PprSide far = nearestOnSide(texel + away, away, kPprHoleMagnifiedReach - 1);
+        if (far.value >= v0 || distance(own, fullOffset(far.value)) <= kPprHoleMinDistance) continue;
+        vec2 nearSource = filteredSource(near.texel, near.value, texel, screenCentre, pixelsPerTexel);
+        vec2 farSource = filteredSource(far.texel, far.value, texel, screenCentre, pixelsPerTexel);
+        if (any(greaterThan(abs(floor(nearSource) - floor(farSource)), vec2(1.0)))) continue;
+        float t = 1.0 / float(1 + abs(dot(vec2(far.texel - texel), vec2(away))));  // 1 / (texels from near to far)
+        choice.texel = near.texel;
+        choice.between = true;
+        choice.source = mix(nearSource, farSource, t);
     }
-    if (empty && best == kPprClearValue) return anyTexel;  // no two sides to compare: the nearest layer around
-    return bestTexel;
+    if (empty && best == kPprClearValue) choice.texel = anyTexel;  // no two sides to compare: the nearest layer around
+    return choice;
 }
 
 struct PprResolved {
@@ -110,11 +149,16 @@ PprResolved pprResolve(ivec2 texel, vec2 screenCentre, float pixelsPerTexel, uin
     r.color = vec3(0.0);
     r.source = screenCentre;
     uint v0 = fetchValue(texel);
+    bool between = false;  // holes=1 inside a magnified layer: sample between two of its samples
+    vec2 betweenSource = screenCentre;
     // Hole filling. holes=1: enclosedHoleSource. holes=slides: take the neighbour with the smallest
     // offset when this texel has no data, or when that neighbour's offset is significantly
     // (kPprHoleMinDistance) shorter — a hole in the first reflection layer; the slides' four neighbours.
     if ((flags & kPprHoleEnclosed) != 0u) {
-        r.readTexel = enclosedHoleSource(texel, v0);
+        PprHoleChoice choice = enclosedHoleSource(texel, v0, screenCentre, pixelsPerTexel);
+        r.readTexel = choice.texel;
+        between = choice.between;
+        betweenSource = choice.source;
     } else if ((flags & kPprHoleFilling) != 0u) {
         const ivec2 n1 = ivec2(1, 0), n2 = ivec2(0, 1), n3 = ivec2(1, 1), n4 = ivec2(-1, 0);
         uint v1 = fetchValue(texel + n1), v2 = fetchValue(texel + n2), v3 = fetchValue(texel + n3), v4 = fetchValue(texel + n4);
@@ -127,24 +171,30 @@ PprResolved pprResolve(ivec2 texel, vec2 screenCentre, float pixelsPerTexel, uin
             else r.readTexel = texel + n4;
         }
     }
-    PprDecoded d = pprDecode(fetchValue(r.readTexel));
-    r.valid = d.valid;
-    if (!d.valid) return r;
+    vec2 filteredAt = betweenSource, pointAt = floor(betweenSource) + 0.5;
+    r.valid = between;
+    if (!between) {
+        PprDecoded d = pprDecode(fetchValue(r.readTexel));
+        r.valid = d.valid;
+        if (!d.valid) return r;
 
-    // The offset as if this texel had the neighbour's data: the point sample repeats the neighbour's
-    // source; the filtered one moves the source the mirrored way along the offset.
-    vec2 offsetFiltered = d.whole + d.fraction;
-    vec2 offsetPoint = d.whole;
-    vec2 shift = vec2(r.readTexel - texel) * pixelsPerTexel;
-    if (r.readTexel != texel) {
-        vec2 dir = normalize(offsetFiltered);
-        offsetPoint -= shift;
-        offsetFiltered -= 2.0 * dir * dot(dir, shift);
+        // The offset as if this texel had the neighbour's data: the point sample repeats the
+        // neighbour's source; the filtered one moves the source the mirrored way along the offset.
+        vec2 offsetFiltered = d.whole + d.fraction;
+        vec2 offsetPoint = d.whole;
+        vec2 shift = vec2(r.readTexel - texel) * pixelsPerTexel;
+        if (r.readTexel != texel) {
+            vec2 dir = normalize(offsetFiltered);
+            offsetPoint -= shift;
+            offsetFiltered -= 2.0 * dir * dot(dir, shift);
+        }
+        filteredAt = screenCentre - offsetFiltered;
+        pointAt = screenCentre - offsetPoint;
     }
-    vec3 filtered = textureLod(sceneLinear, (screenCentre - offsetFiltered) * frame.invScreenSize, 0.0).rgb;
-    vec3 unfiltered = textureLod(scenePoint, (screenCentre - offsetPoint) * frame.invScreenSize, 0.0).rgb;
+    vec3 filtered = textureLod(sceneLinear, filteredAt * frame.invScreenSize, 0.0).rgb;
+    vec3 unfiltered = textureLod(scenePoint, pointAt * frame.invScreenSize, 0.0).rgb;
     r.color = unfiltered;
-    r.source = screenCentre - offsetPoint;
+    r.source = pointAt;
     if ((flags & kPprFiltering) != 0u)
         r.color = (flags & kPprAntiBleeding) != 0u ? reduceColorBleeding(filtered, unfiltered) : filtered;
     return r;

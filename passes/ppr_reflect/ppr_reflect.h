@@ -22,6 +22,8 @@ PPR_CONST(uint, kPprHoleEnclosed, 256u)
 PPR_CONST(uint, kPprWriteDistance, 512u)
 // How far (texels) the depth-aware rule looks on each side for the enclosing nearer layer.
 PPR_CONST(int, kPprHoleReach, 2)
+// How far (texels) it looks for the far side of a magnified nearer layer around a texel with data.
+PPR_CONST(int, kPprHoleMagnifiedReach, 3)
 // Taps of the normalmap=raymarch march between the pixel and the approximated reflection.
 PPR_CONST(uint, kPprNormalTaps, 4u)
 // Hole filling replaces a pixel's own data only when a neighbour's offset is this much shorter
