@@ -85,6 +85,37 @@ bool normalMappedHit(vec3 surface, vec3 dir, vec2 flatSource, out vec2 hitPixel)
     return false;
 }
 
+// holes=1, a pixel on the reflector's rim that nothing was projected to: what stands on the edge (a
+// mirror's frame, a wall meeting a floor mirror) continues into its reflection there, but the main
+// view shows the part that touches the mirror only in slivers under a pixel wide. Take the
+// neighbour off this reflector whose mirror image lands within kPprRimReach pixels of this one, if
+// it stands clearly in front of the plane (the floor around a puddle lies in or under it).
+bool rimContinuation(ivec2 pix, uint id, out vec2 source) {
+    const ivec2 around[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
+    ReflectorData reflector = reflectors[id - 1u];
+    float nearest = kPprRimReach;
+    bool found = false;
+    for (int k = 0; k < 4; ++k) {
+        ivec2 q = pix + around[k];
+        if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, ivec2(frame.screenSize)))) continue;
+        float depth = texelFetch(depthTex, q, 0).r;
+        if (depth <= 0.0 || texelFetch(reflectorTex, q, 0).r == id) continue;
+        vec3 p = worldFromDepth((vec2(q) + 0.5) * frame.invScreenSize, depth);
+        float height = dot(p - reflector.center, reflector.normal);
+        if (height <= kPprRimMinHeight * frame.cameraPos.w / depth) continue;  // view distance = near / depth
+        vec2 image;
+        float w;
+        if (!projectToScreen(p - 2.0 * height * reflector.normal, image, w)) continue;
+        float d = distance(image, vec2(pix) + 0.5);
+        if (d < nearest) {
+            nearest = d;
+            source = vec2(q) + 0.5;
+            found = true;
+        }
+    }
+    return found;
+}
+
 vec3 hue(float angle) { return clamp(abs(fract(angle + vec3(0.0, 2.0 / 3.0, 1.0 / 3.0)) * 6.0 - 3.0) - 1.0, 0.0, 1.0); }
 
 // Heat map of reflectors surviving per-tile culling: blue (1) → green → yellow → red (64 and more).
@@ -125,6 +156,13 @@ void main() {
     }
 
     PprResolved r = pprResolve(pix, vec2(pix) + 0.5, 1.0, pc.flags);
+    vec2 rim;
+    if (!r.valid && (pc.flags & kPprHoleEnclosed) != 0u && rimContinuation(pix, id, rim)) {
+        r.valid = true;
+        r.color = textureLod(scenePoint, rim * frame.invScreenSize, 0.0).rgb;
+        r.source = rim;
+        r.readTexel = ivec2(rim);  // not this pixel's data: marked hole-filled
+    }
     if ((pc.flags & kPprWriteDistance) != 0u && r.valid && pc.debugView == kDebugNone) storeDistance(pix, r.source);
     if (pc.debugView == kDebugHoles) {
         vec3 c = !r.valid ? vec3(1.0, 0.0, 0.0) : r.readTexel == pix ? vec3(0.0, 0.8, 0.0) : vec3(1.0, 0.85, 0.0);

@@ -24,6 +24,10 @@ PPR_CONST(uint, kPprWriteDistance, 512u)
 PPR_CONST(int, kPprHoleReach, 2)
 // How far (texels) it looks for the far side of a magnified nearer layer around a texel with data.
 PPR_CONST(int, kPprHoleMagnifiedReach, 3)
+// holes=1 at a reflector's rim with no data: how close (pixels) a neighbour's mirror image must land,
+// and how far in front of the plane it must stand, as a fraction of its view distance.
+PPR_CONST(float, kPprRimReach, 3.0f)
+PPR_CONST(float, kPprRimMinHeight, 0.002f)
 // Taps of the normalmap=raymarch march between the pixel and the approximated reflection.
 PPR_CONST(uint, kPprNormalTaps, 4u)
 // Hole filling replaces a pixel's own data only when a neighbour's offset is this much shorter
