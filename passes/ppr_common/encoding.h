@@ -86,6 +86,12 @@ PPR_INLINE bool pprEncode(vec2 offset, PPR_OUT(uint) value) {
     return true;
 }
 
+// The integer parts of an encoded value in its own basis (X across the axis, biased; Y along it)
+// and the basis, read without decoding. Two values in one basis whose integer parts differ by at
+// most 2 per axis are less than 4.6 px apart (the fractions add at most 1.24 per axis).
+PPR_INLINE ivec2 pprEncodedWhole(uint value) { return ivec2(int((value >> 5u) & 0xFFFu), int(value >> 20u)); }
+PPR_INLINE uint pprEncodedBasis(uint value) { return value & 3u; }
+
 PPR_INLINE PprDecoded pprDecode(uint value) {
     PprDecoded d;
     d.whole = vec2(0.0f);

@@ -62,6 +62,17 @@ PprSide nearestOnSide(ivec2 texel, ivec2 step, int reach) {
     return side;
 }
 
+// Whether offset `v` is significantly (kPprHoleMinDistance) shorter than this texel's own `v0`
+// (decoded: `own`). Neighbours within one layer differ by a pixel or two, so most calls are settled
+// on the encoded values, without decoding: in one basis, integer parts within 2 of each other are
+// under 4.6 px apart.
+bool significantlyNearer(uint v, uint v0, vec2 own) {
+    if (v >= v0) return false;
+    if (pprEncodedBasis(v) == pprEncodedBasis(v0) && all(lessThanEqual(abs(pprEncodedWhole(v) - pprEncodedWhole(v0)), ivec2(2))))
+        return false;
+    return distance(own, fullOffset(v)) > kPprHoleMinDistance;
+}
+
 // Where a texel's reflection comes from: a texel's data (its own or a neighbour's), or a position
 // between two samples of one magnified layer.
 struct PprHoleChoice {
@@ -105,8 +116,7 @@ PprHoleChoice enclosedHoleSource(ivec2 texel, uint v0, vec2 screenCentre, float 
             }
             continue;
         }
-        bool nearA = a.value < v0 && distance(own, fullOffset(a.value)) > kPprHoleMinDistance;
-        bool nearB = b.value < v0 && distance(own, fullOffset(b.value)) > kPprHoleMinDistance;
+        bool nearA = significantlyNearer(a.value, v0, own), nearB = significantlyNearer(b.value, v0, own);
         if (nearA && nearB) {
             if (nearer.value < best) {
                 best = nearer.value;
@@ -123,7 +133,7 @@ PprHoleChoice enclosedHoleSource(ivec2 texel, uint v0, vec2 screenCentre, float 
         PprSide near = nearA ? a : b;
         ivec2 away = nearA ? -directions[k] : directions[k];
         PprSide far = nearestOnSide(texel + away, away, kPprHoleMagnifiedReach - 1);
-        if (far.value >= v0 || distance(own, fullOffset(far.value)) <= kPprHoleMinDistance) continue;
+        if (!significantlyNearer(far.value, v0, own)) continue;
         vec2 nearSource = filteredSource(near.texel, near.value, texel, screenCentre, pixelsPerTexel);
         vec2 farSource = filteredSource(far.texel, far.value, texel, screenCentre, pixelsPerTexel);
         if (any(greaterThan(abs(floor(nearSource) - floor(farSource)), vec2(1.0)))) continue;

@@ -91,21 +91,28 @@ bool normalMappedHit(vec3 surface, vec3 dir, vec2 flatSource, out vec2 hitPixel)
 // neighbour off this reflector whose mirror image lands within kPprRimReach pixels of this one, if
 // it stands clearly in front of the plane (the floor around a puddle lies in or under it).
 bool rimContinuation(ivec2 pix, uint id, out vec2 source) {
-    const ivec2 around[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
-    ReflectorData reflector = reflectors[id - 1u];
+    // The four neighbours' reflector ids in two gathers (left and up, then down and right); most
+    // empty pixels lie inside the reflector and stop here. Beyond the screen the clamped gather
+    // repeats this pixel's id: not a rim.
+    uvec4 upperLeft = textureGather(reflectorTex, vec2(pix) * frame.invScreenSize, 0);
+    uvec4 lowerRight = textureGather(reflectorTex, (vec2(pix) + 1.0) * frame.invScreenSize, 0);
+    uvec4 ids = uvec4(upperLeft.x, upperLeft.z, lowerRight.x, lowerRight.z);
+    if (all(equal(ids, uvec4(id)))) return false;
+    const ivec2 around[4] = ivec2[4](ivec2(-1, 0), ivec2(0, -1), ivec2(0, 1), ivec2(1, 0));
     float nearest = kPprRimReach;
     bool found = false;
     for (int k = 0; k < 4; ++k) {
+        if (ids[k] == id) continue;
         ivec2 q = pix + around[k];
-        if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, ivec2(frame.screenSize)))) continue;
         float depth = texelFetch(depthTex, q, 0).r;
-        if (depth <= 0.0 || texelFetch(reflectorTex, q, 0).r == id) continue;
+        if (depth <= 0.0) continue;
+        vec3 normal = reflectors[id - 1u].normal;
         vec3 p = worldFromDepth((vec2(q) + 0.5) * frame.invScreenSize, depth);
-        float height = dot(p - reflector.center, reflector.normal);
+        float height = dot(p - reflectors[id - 1u].center, normal);
         if (height <= kPprRimMinHeight * frame.cameraPos.w / depth) continue;  // view distance = near / depth
         vec2 image;
         float w;
-        if (!projectToScreen(p - 2.0 * height * reflector.normal, image, w)) continue;
+        if (!projectToScreen(p - 2.0 * height * normal, image, w)) continue;
         float d = distance(image, vec2(pix) + 0.5);
         if (d < nearest) {
             nearest = d;

@@ -142,3 +142,31 @@ TEST(PprEncoding, FractionIsMirroredAlongTheOffset) {
     d = pprDecode(v);
     EXPECT_NEAR(d.fraction.y, 0.3f, 0.09f);
 }
+
+// The reflection pass settles most "significantly shorter" tests on the encoded integer parts
+// (ppr_resolve.glsl, significantlyNearer): they must be the decoded whole offset in the value's
+// basis, and parts within 2 per axis must mean offsets under 4.6 px apart.
+TEST(PprEncoding, EncodedWholePartsAreTheDecodedOnesAndBoundTheDistance) {
+    uint32_t checked = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const float angle = float(i) * 0.7371f, length = 0.3f + float(i % 997) * 0.9f;
+        const glm::vec2 offset(std::cos(angle) * length, std::sin(angle) * length);
+        uint32_t value = 0;
+        if (!pprEncode(offset, value)) continue;
+        const PprDecoded d = pprDecode(value);
+        const uint32_t basis = pprEncodedBasis(value);
+        EXPECT_EQ(basis, pprBasisIndex(offset));
+        const glm::vec2 inBasis = pprToBasis(d.whole, basis);
+        EXPECT_EQ(pprEncodedWhole(value), glm::ivec2(int(inBasis.x) + kPprXBias, int(inBasis.y)));
+        // A neighbour up to 2 integer steps away on each axis, same basis when it keeps it.
+        const glm::vec2 nudge(float(i % 5 - 2) + 0.37f * float(i % 3), float((i / 5) % 5 - 2) - 0.29f * float(i % 2));
+        uint32_t other = 0;
+        if (!pprEncode(offset + nudge, other) || pprEncodedBasis(other) != basis) continue;
+        if (glm::all(glm::lessThanEqual(glm::abs(pprEncodedWhole(other) - pprEncodedWhole(value)), glm::ivec2(2)))) {
+            const PprDecoded e = pprDecode(other);
+            EXPECT_LT(glm::distance(d.whole + d.fraction, e.whole + e.fraction), 4.6f) << i;
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 1000u);
+}
