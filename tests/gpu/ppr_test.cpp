@@ -138,12 +138,9 @@ TEST(PprQuality, AtLeastAsCloseAsBruteForce) {
 // magnified-layer fill the defaults scored 37.63, which fails both checks.
 TEST(PprQuality, FillsBetweenTheSamplesOfAMagnifiedLayer) {
     GpuFixture f(scene::makeStressScene(64));
-    const scene::CameraPose camera = f.camera("reflective_25");
-    f.headless->setTechnique("planar");
-    const app::CaptureResult ref = f.headless->capture(camera, kSize, 1, false, true);
+    const Rendered ref = render(f, "planar", "reflective_25");
     auto composited = [&](const std::string& technique) {
-        f.headless->setTechnique(technique);
-        return app::compositedPsnrDb(f.headless->capture(camera, kSize, 1, false, true).image, ref.image, ref.reflection);
+        return app::compositedPsnrDb(render(f, technique, "reflective_25").final, ref.final, ref.reflection);
     };
     f.headless->settings().set("holes", "slides");
     f.headless->settings().set("facing", "0");
