@@ -19,14 +19,15 @@ vec3 rgbToYCoCg(vec3 c) { return vec3(0.25 * c.r + 0.5 * c.g + 0.25 * c.b, 0.5 *
 vec3 yCoCgToRgb(vec3 c) { return vec3(c.x + c.y - c.z, c.x + c.z, c.x - c.y - c.z); }
 
 // Keep the filtered colour unless it strays perceptually far from the point sample: luma and
-// (luma-normalised) chroma are pulled towards the point sample separately, by how far apart they are.
-vec3 reduceColorBleeding(vec3 filtered, vec3 unfiltered) {
+// (luma-normalised) chroma are pulled towards the point sample separately, by how far apart they are
+// (times `strength`: 1, less where the filtered colour averages a minified footprint).
+vec3 reduceColorBleeding(vec3 filtered, vec3 unfiltered, float strength) {
     float exposure = frame.lightColor.w;  // compare as displayed, not in raw HDR units
     vec3 f = rgbToYCoCg(filtered * exposure), u = rgbToYCoCg(unfiltered * exposure);
     f.yz /= max(f.x, 1e-4);
     u.yz /= max(u.x, 1e-4);
-    float lumaWeight = clamp(3.0 * abs(f.x - u.x), 0.0, 1.0);
-    float chromaWeight = clamp(1.4 * length(f.yz - u.yz), 0.0, 1.0);
+    float lumaWeight = clamp(3.0 * strength * abs(f.x - u.x), 0.0, 1.0);
+    float chromaWeight = clamp(1.4 * strength * length(f.yz - u.yz), 0.0, 1.0);
     float y = mix(f.x, u.x, lumaWeight);
     vec2 coCg = mix(f.yz, u.yz, chromaWeight) * y;
     return max(yCoCgToRgb(vec3(y, coCg)), vec3(0.0)) / exposure;
@@ -66,10 +67,12 @@ PprSide nearestOnSide(ivec2 texel, ivec2 step, int reach) {
 // (decoded: `own`). Neighbours within one layer differ by a pixel or two, so most calls are settled
 // on the encoded values, without decoding: in one basis, integer parts within 2 of each other are
 // under 4.6 px apart.
+bool closeOffsets(uint v, uint v0) {
+    return pprEncodedBasis(v) == pprEncodedBasis(v0) && all(lessThanEqual(abs(pprEncodedWhole(v) - pprEncodedWhole(v0)), ivec2(2)));
+}
+
 bool significantlyNearer(uint v, uint v0, vec2 own) {
-    if (v >= v0) return false;
-    if (pprEncodedBasis(v) == pprEncodedBasis(v0) && all(lessThanEqual(abs(pprEncodedWhole(v) - pprEncodedWhole(v0)), ivec2(2))))
-        return false;
+    if (v >= v0 || closeOffsets(v, v0)) return false;
     return distance(own, fullOffset(v)) > kPprHoleMinDistance;
 }
 
@@ -79,6 +82,7 @@ struct PprHoleChoice {
     ivec2 texel;       // the texel whose data is used
     bool between;      // a magnified layer's gap: sample at `source` instead
     vec2 source;       // screen position (pixels) of the filtered sample when `between`
+    uvec4 around;      // a texel with data: its neighbours' values at +x, -x, +y, -y (for pprFootprint)
 };
 
 // The screen position a texel's data reflects to its centre: its filtered source.
@@ -94,6 +98,7 @@ PprHoleChoice enclosedHoleSource(ivec2 texel, uint v0, vec2 screenCentre, float 
     choice.texel = texel;
     choice.between = false;
     choice.source = screenCentre;
+    choice.around = uvec4(kPprClearValue);
     uint best = v0;
     float bestSpread = 3.4e38;  // empty: how far apart the chosen direction's two sides are
     uint anyBest = kPprClearValue;
@@ -116,6 +121,8 @@ PprHoleChoice enclosedHoleSource(ivec2 texel, uint v0, vec2 screenCentre, float 
             }
             continue;
         }
+        if (k == 0) choice.around.xy = uvec2(a.value, b.value);  // reach 1: the adjacent texels
+        else choice.around.zw = uvec2(a.value, b.value);
         bool nearA = significantlyNearer(a.value, v0, own), nearB = significantlyNearer(b.value, v0, own);
         if (nearA && nearB) {
             if (nearer.value < best) {
@@ -146,11 +153,59 @@ PprHoleChoice enclosedHoleSource(ivec2 texel, uint v0, vec2 screenCentre, float 
     return choice;
 }
 
+// holes=1, a screen texel with its own data: where its filtered sample lies and how far the target
+// pixel reaches in the source, from the local source → target map. Each value names a source pixel
+// centre (the texel centre minus the whole offset) and, by its fraction, where that source landed
+// in the texel (the fraction un-mirrored); an adjacent texel of the same layer per axis gives the
+// map's two columns. The slides' mirrored fraction assumes a unit mirror map; a reflection seen
+// obliquely is minified several times (the floor in the wall mirror: 8 source pixels per target
+// row), where it misplaces the sample by up to a few source pixels and a single bilinear tap
+// aliases thin lines. Per axis the neighbour whose source lies nearer is taken; kPprFootprintMaxStep
+// or more away, it is another layer. False: the slides' sample.
+struct PprFootprint {
+    vec2 position;         // screen position (pixels) of the filtered sample
+    mat2 sourcePerTarget;  // source pixels per target pixel: columns along target x and y
+};
+
+// One axis of the map: of the adjacent texels `plus` and `minus` along `axis`, the one whose source
+// lies nearer (under kPprFootprintMaxStep); the steps are per target pixel along +axis.
+bool footprintStep(uint plus, uint minus, vec2 axis, PprDecoded own, vec2 ownLanding, out vec2 sourceStep, out vec2 targetStep) {
+    float nearest = kPprFootprintMaxStep;
+    bool found = false;
+    for (int side = 0; side < 2; ++side) {
+        uint v = side == 0 ? plus : minus;
+        if (v == kPprClearValue) continue;
+        float sign = side == 0 ? 1.0 : -1.0;
+        PprDecoded n = pprDecode(v);
+        vec2 step = axis * sign - n.whole + own.whole;
+        if (length(step) >= nearest) continue;
+        nearest = length(step);
+        sourceStep = step * sign;
+        targetStep = (axis * sign + pprMirrorAlong(n.fraction, n.whole + n.fraction) - ownLanding) * sign;
+        found = true;
+    }
+    return found;
+}
+
+bool pprFootprint(PprDecoded own, uvec4 around, vec2 screenCentre, out PprFootprint footprint) {
+    vec2 ownLanding = pprMirrorAlong(own.fraction, own.whole + own.fraction);  // where it landed, from the centre
+    vec2 sourceX, targetX, sourceY, targetY;
+    if (!footprintStep(around.x, around.y, vec2(1.0, 0.0), own, ownLanding, sourceX, targetX) ||
+        !footprintStep(around.z, around.w, vec2(0.0, 1.0), own, ownLanding, sourceY, targetY))
+        return false;
+    mat2 targetSteps = mat2(targetX, targetY);
+    if (abs(determinant(targetSteps)) < 0.05) return false;
+    footprint.sourcePerTarget = mat2(sourceX, sourceY) * inverse(targetSteps);
+    footprint.position = screenCentre - own.whole - footprint.sourcePerTarget * ownLanding;
+    return true;
+}
+
 struct PprResolved {
     bool valid;
     vec3 color;
     ivec2 readTexel;  // the texel whose data was used (hole filling may pick a neighbour)
     vec2 source;      // screen position (pixels) of the point sample: where the reflected point is seen
+    vec2 halfStep;    // minified: the filtered sample's two taps lie ± this apart (0: one tap)
 };
 
 PprResolved pprResolve(ivec2 texel, vec2 screenCentre, float pixelsPerTexel, uint flags) {
@@ -158,9 +213,11 @@ PprResolved pprResolve(ivec2 texel, vec2 screenCentre, float pixelsPerTexel, uin
     r.readTexel = texel;
     r.color = vec3(0.0);
     r.source = screenCentre;
+    r.halfStep = vec2(0.0);
     uint v0 = fetchValue(texel);
     bool between = false;  // holes=1 inside a magnified layer: sample between two of its samples
     vec2 betweenSource = screenCentre;
+    uvec4 around = uvec4(kPprClearValue);
     // Hole filling. holes=1: enclosedHoleSource. holes=slides: take the neighbour with the smallest
     // offset when this texel has no data, or when that neighbour's offset is significantly
     // (kPprHoleMinDistance) shorter — a hole in the first reflection layer; the slides' four neighbours.
@@ -169,6 +226,7 @@ PprResolved pprResolve(ivec2 texel, vec2 screenCentre, float pixelsPerTexel, uin
         r.readTexel = choice.texel;
         between = choice.between;
         betweenSource = choice.source;
+        around = choice.around;
     } else if ((flags & kPprHoleFilling) != 0u) {
         const ivec2 n1 = ivec2(1, 0), n2 = ivec2(0, 1), n3 = ivec2(1, 1), n4 = ivec2(-1, 0);
         uint v1 = fetchValue(texel + n1), v2 = fetchValue(texel + n2), v3 = fetchValue(texel + n3), v4 = fetchValue(texel + n4);
@@ -183,8 +241,9 @@ PprResolved pprResolve(ivec2 texel, vec2 screenCentre, float pixelsPerTexel, uin
     }
     vec2 filteredAt = betweenSource, pointAt = floor(betweenSource) + 0.5;
     r.valid = between;
+    PprDecoded d;
     if (!between) {
-        PprDecoded d = pprDecode(fetchValue(r.readTexel));
+        d = pprDecode(fetchValue(r.readTexel));
         r.valid = d.valid;
         if (!d.valid) return r;
 
@@ -201,11 +260,36 @@ PprResolved pprResolve(ivec2 texel, vec2 screenCentre, float pixelsPerTexel, uin
         filteredAt = screenCentre - offsetFiltered;
         pointAt = screenCentre - offsetPoint;
     }
-    vec3 filtered = textureLod(sceneLinear, filteredAt * frame.invScreenSize, 0.0).rgb;
     vec3 unfiltered = textureLod(scenePoint, pointAt * frame.invScreenSize, 0.0).rgb;
     r.color = unfiltered;
     r.source = pointAt;
-    if ((flags & kPprFiltering) != 0u)
-        r.color = (flags & kPprAntiBleeding) != 0u ? reduceColorBleeding(filtered, unfiltered) : filtered;
+    if ((flags & kPprFiltering) == 0u) return r;
+    // holes=1, where the reflection is minified (more than kPprFootprintMinStep source pixels per
+    // target pixel): the filtered sample where the local map puts it, averaged over the target pixel's
+    // footprint along its longer side (two bilinear taps a half footprint apart: a box filter, as the
+    // reference's texture LOD blurs what it minifies). Anti-bleeding then pulls less towards the one
+    // point sample, which stands for a smaller share of the footprint. Adjacent offsets within 2 px of
+    // this one (closeOffsets) mean a map near 1:1 (a unit mirror changes the offset by 2 per pixel):
+    // nothing minified, and the footprint's decoding is skipped.
+    float bleedStrength = 1.0;
+    vec3 filtered;
+    bool unitMap = (closeOffsets(around.x, v0) || around.x == kPprClearValue) && (closeOffsets(around.y, v0) || around.y == kPprClearValue) &&
+                   (closeOffsets(around.z, v0) || around.z == kPprClearValue) && (closeOffsets(around.w, v0) || around.w == kPprClearValue);
+    bool screenGrid = all(equal(screenCentre, vec2(texel) + 0.5));  // texels are screen pixels, not a scaled atlas region
+    PprFootprint footprint;
+    float reach = 0.0;
+    if ((flags & kPprHoleEnclosed) != 0u && !between && r.readTexel == texel && screenGrid && !unitMap &&
+        pprFootprint(d, around, screenCentre, footprint))
+        reach = max(length(footprint.sourcePerTarget[0]), length(footprint.sourcePerTarget[1]));
+    if (reach > kPprFootprintMinStep && reach < kPprFootprintMaxStep) {
+        mat2 m = footprint.sourcePerTarget;
+        r.halfStep = 0.25 * (length(m[0]) > length(m[1]) ? m[0] : m[1]);
+        filtered = 0.5 * (textureLod(sceneLinear, (footprint.position + r.halfStep) * frame.invScreenSize, 0.0).rgb +
+                          textureLod(sceneLinear, (footprint.position - r.halfStep) * frame.invScreenSize, 0.0).rgb);
+        bleedStrength = inversesqrt(reach);
+    } else {
+        filtered = textureLod(sceneLinear, filteredAt * frame.invScreenSize, 0.0).rgb;
+    }
+    r.color = (flags & kPprAntiBleeding) != 0u ? reduceColorBleeding(filtered, unfiltered, bleedStrength) : filtered;
     return r;
 }

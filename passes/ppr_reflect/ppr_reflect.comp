@@ -199,7 +199,10 @@ void main() {
     vec2 seen = r.source;
     vec2 hit;
     if (n != flatNormal && dot(dir, flatNormal) > 0.0 && normalMappedHit(surface, dir, r.source, hit)) {
-        color = textureLod(sceneLinear, hit * frame.invScreenSize, 0.0).rgb;
+        // Averaged over the flat sample's footprint where that is minified (the normal map moves the
+        // reflected point, not how much of the source one pixel covers).
+        color = 0.5 * (textureLod(sceneLinear, (hit + r.halfStep) * frame.invScreenSize, 0.0).rgb +
+                       textureLod(sceneLinear, (hit - r.halfStep) * frame.invScreenSize, 0.0).rgb);
         seen = hit;
     }
     if ((pc.flags & kPprEnvironment) != 0u) color = environmentBlend(color, seen, surface, dir);

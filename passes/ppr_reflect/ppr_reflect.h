@@ -28,6 +28,11 @@ PPR_CONST(int, kPprHoleMagnifiedReach, 3)
 // and how far in front of the plane it must stand, as a fraction of its view distance.
 PPR_CONST(float, kPprRimReach, 3.0f)
 PPR_CONST(float, kPprRimMinHeight, 0.002f)
+// holes=1, the filtered sample's footprint (ppr_resolve.glsl pprFootprint): a neighbour whose source
+// lies this far (pixels) or farther belongs to another layer; above kPprFootprintMinStep source
+// pixels per target pixel the sample averages the footprint.
+PPR_CONST(float, kPprFootprintMaxStep, 24.0f)
+PPR_CONST(float, kPprFootprintMinStep, 1.5f)
 // Taps of the normalmap=raymarch march between the pixel and the approximated reflection.
 PPR_CONST(uint, kPprNormalTaps, 4u)
 // Hole filling replaces a pixel's own data only when a neighbour's offset is this much shorter
