@@ -1,7 +1,7 @@
 // PPR's reflection resolve, shared by the screen-space reflection pass (ppr_reflect.comp) and the
 // glass atlas's (glass_reflect.comp): decode the offset stored at a texel, patch holes from the
-// neighbour with the shortest offset, sample the lit scene filtered and unfiltered, and reduce the
-// colour bleeding of the filtered sample.
+// neighbour with the shortest offset, sample the lit scene filtered (over the pixel's footprint where
+// the reflection is minified) and unfiltered, and reduce the colour bleeding of the filtered sample.
 //
 // The includer provides `uint fetchValue(ivec2 texel)` (kPprClearValue outside its buffer) and the
 // samplers `sceneLinear` / `scenePoint` (the lit scene, bilinear and point). A texel covers
@@ -63,14 +63,15 @@ PprSide nearestOnSide(ivec2 texel, ivec2 step, int reach) {
     return side;
 }
 
-// Whether offset `v` is significantly (kPprHoleMinDistance) shorter than this texel's own `v0`
-// (decoded: `own`). Neighbours within one layer differ by a pixel or two, so most calls are settled
-// on the encoded values, without decoding: in one basis, integer parts within 2 of each other are
-// under 4.6 px apart.
+// Whether two encoded offsets lie within 2 px of each other per axis, read without decoding: in one
+// basis, integer parts within 2 of each other are under 4.6 px apart.
 bool closeOffsets(uint v, uint v0) {
     return pprEncodedBasis(v) == pprEncodedBasis(v0) && all(lessThanEqual(abs(pprEncodedWhole(v) - pprEncodedWhole(v0)), ivec2(2)));
 }
 
+// Whether offset `v` is significantly (kPprHoleMinDistance) shorter than this texel's own `v0`
+// (decoded: `own`). Neighbours within one layer differ by a pixel or two, so most calls are settled
+// on the encoded values (closeOffsets), without decoding.
 bool significantlyNearer(uint v, uint v0, vec2 own) {
     if (v >= v0 || closeOffsets(v, v0)) return false;
     return distance(own, fullOffset(v)) > kPprHoleMinDistance;
