@@ -23,6 +23,9 @@ nlohmann::json pprStatsJson(const CaptureResult& r, VkExtent2D size, size_t proj
             {"tiles_projected", s.tilesProjected},  // the projection pass's workgroups
             {"tiles_with_survivors", s.tilesWithSurvivors},
             {"reflectors_projected", projected},
+            // The bounds pass's compacted lists: what every tile's culling loops over.
+            {"reflectors_on_screen", s.reflectorsOnScreen},
+            {"reflectors_reflecting", s.reflectorsReflecting},
             // Without culling every content tile would test every reflector.
             {"reflector_tile_pairs_unculled", uint64_t(s.tilesWithContent) * projected},
             {"reflector_tile_pairs", s.reflectorTilePairs},

@@ -59,8 +59,10 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
     passes::PprProjectInputs project;
     project.depth = f.gbuffer.depth;
     project.intermediate = passes::addPprClearPass(f.graph, f.in, "ppr.intermediate", f.in.extent);
-    project.bounds = bounds_.add(f.graph, f.in, binding.reflectors, projected);
-    project.stats = tiles.stats;
+    const passes::PprBoundsOutputs bounds = bounds_.add(f.graph, f.in, binding, tiles.stats);
+    project.bounds = bounds.bounds;
+    project.visible = bounds.visible;
+    project.stats = bounds.stats;
     project.tilesX = tiles.tilesX;
     project.tilesY = tiles.tilesY;
     project.cullTiles = s.tiles;
@@ -70,7 +72,7 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
     // With culling and indirect dispatch, the projection runs only on the tiles that can be reflected.
     if (s.tiles && f.settings.tiles.indirect)
         project.reach = reach_.add(f.graph, f.in, binding,
-                                   {project.depth, project.bounds, project.stats, project.tilesX, project.tilesY, s.reachThreads});
+                                   {project.depth, project.bounds, project.visible, project.stats, project.tilesX, project.tilesY, s.reachThreads});
     passes::GlassRegionBuffers regions;
     addGlass(f, project, regions);
     const passes::PprProjectOutputs scatter = project_.add(f.graph, f.in, binding, project);

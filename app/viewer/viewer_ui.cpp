@@ -306,7 +306,8 @@ PanelActions drawPanel(PanelModel& m) {
             // The counts behind tiles / indirect: what the classification found and what culling kept.
             const gpu::PprFrameStats& s = *m.pprStats;
             const uint32_t tiles = gpu::pprTilesCovering(m.extent.width) * gpu::pprTilesCovering(m.extent.height);
-            ImGui::Text("reflectors %u (PPR projects %u)", m.reflectors, m.reflectorsProjected);
+            ImGui::Text("reflectors %u (PPR projects %u; on screen %u, reflecting %u)", m.reflectors, m.reflectorsProjected,
+                        s.reflectorsOnScreen, s.reflectorsReflecting);
             ImGui::Text("tiles %u: reflective %u, other reflective %u", tiles, s.dispatch[gpu::kTileClassPlanar].x,
                         s.dispatch[gpu::kTileClassOther].x);
             ImGui::Text("reflector-tile pairs %u of %llu (max %u per tile)", s.reflectorTilePairs,

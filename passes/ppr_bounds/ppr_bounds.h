@@ -3,7 +3,9 @@
 #define PPR_BOUNDS_H
 #include "shader/shared.h"
 
-PPR_CONST(uint, kPprBoundsGroupSize, 64u)
+// One workgroup compacts every reflector in projection order: each invocation takes a run of
+// kPprMaxReflectors / kPprBoundsGroupSize at most (4), judged into one bit mask per list.
+PPR_CONST(uint, kPprBoundsGroupSize, 256u)
 
 PPR_BEGIN
 struct PprBoundsPush {

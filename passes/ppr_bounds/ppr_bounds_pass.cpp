@@ -4,10 +4,15 @@
 #include "ppr_bounds/ppr_bounds.h"
 #include "ppr_bounds_comp.h"
 #include "ppr_common/tile_culling.h"
+#include "ppr_common/tiles.h"
 
 #include <algorithm>
 
 namespace ppr::passes {
+
+// Each invocation's run of the projection order fits one 32-bit mask, and the scanned counts 16 bits.
+static_assert(gpu::kPprMaxReflectors <= 32u * gpu::kPprBoundsGroupSize && gpu::kPprMaxReflectors < 0x10000u,
+              "ppr.bounds compacts every reflector in one workgroup");
 
 PprBoundsPass::PprBoundsPass(const vk::Context& ctx) : ctx_(ctx) {
     shader::PipelineLayoutDesc layout;
@@ -15,17 +20,21 @@ PprBoundsPass::PprBoundsPass(const vk::Context& ctx) : ctx_(ctx) {
     pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(ppr_bounds_comp), layout, "ppr.bounds");
 }
 
-graph::BufferHandle PprBoundsPass::add(graph::RenderGraph& g, const FrameInputs& in, VkBuffer reflectors, uint32_t reflectorCount) const {
+PprBoundsOutputs PprBoundsPass::add(graph::RenderGraph& g, const FrameInputs& in, const ReflectorBinding& r, graph::BufferHandle stats) const {
     gpu::PprBoundsPush push{};
-    push.reflectorCount = reflectorCount;
-    const VkDeviceSize size = sizeof(gpu::PprReflectorBounds) * std::max<uint32_t>(reflectorCount, 1);
-    graph::BufferHandle out;
+    push.reflectorCount = r.count;
+    const VkDeviceSize entries = std::max<uint32_t>(r.count, 1);
+    PprBoundsOutputs out;
     ComputePass(g, ctx_, "ppr.bounds", pipeline_)
         .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
-        .hostStorage(reflectors)
-        .storageWrite(g.createBuffer("ppr.reflector_bounds", {size}), &out)
+        .hostStorage(r.reflectors)
+        .storageWrite(g.createBuffer("ppr.reflector_bounds", {sizeof(gpu::PprReflectorBounds) * entries}), &out.bounds)
+        .hostStorage(r.order)
+        .storageWrite(g.createBuffer("ppr.visible_reflectors", {sizeof(gpu::PprVisibleCounts) + 2 * sizeof(uint32_t) * entries}),
+                      &out.visible)
+        .storageReadWrite(stats, &out.stats)
         .push(push)
-        .dispatch({std::max<uint32_t>(reflectorCount, 1), 1}, gpu::kPprBoundsGroupSize);
+        .dispatch({gpu::kPprBoundsGroupSize, 1}, gpu::kPprBoundsGroupSize);
     return out;
 }
 

@@ -220,4 +220,20 @@ PPR_INLINE bool pprTileMayReachReflector(ReflectorData r, PprReflectorBounds b, 
 PPR_END
 PPR_SIZE_CHECK(PprReflectorBounds, 16);
 
+PPR_BEGIN
+// The frame's reflectors compacted by the bounds pass, ahead of a uint list in the same buffer
+// ("ppr.visible_reflectors"): entries [0, reflecting) are the reflectors on screen whose reflecting
+// side the camera may see, in projection order (the projection's survivor candidates); entries
+// [reflectorCount, reflectorCount + onScreen) those on screen either side facing (its possible
+// occluders). A reflector missing from a list fails the culling tests that read it anyway
+// (pprTileMayReachReflector, pprRectsOverlap on an empty rectangle), so the lists change no image.
+struct PprVisibleCounts {
+    uint reflecting;
+    uint onScreen;
+    uint pad0;
+    uint pad1;
+};
+PPR_END
+PPR_SIZE_CHECK(PprVisibleCounts, 16);
+
 #endif

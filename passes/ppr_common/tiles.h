@@ -37,9 +37,11 @@ struct PprFrameStats {
     uint maxTileSurvivors;         // the most reflectors surviving in one tile
     uint tilesProjected;           // workgroups of the projection pass (all tiles, or the reach pass's list)
     uint tilesWithSurvivors;       // tiles left with at least one reflector after culling
+    uint reflectorsReflecting;     // reflectors on screen showing their reflecting side (ppr.bounds's list)
+    uint reflectorsOnScreen;       // reflectors on screen, either side (possible occluders)
 };
 PPR_END
-PPR_SIZE_CHECK(PprFrameStats, 48);
+PPR_SIZE_CHECK(PprFrameStats, 56);
 // kTileClassCount must match PprFrameStats::dispatch.
 
 PPR_BEGIN

@@ -19,7 +19,8 @@
 // shared atomic per subgroup and value). With culling on, the workgroup then tests every reflector
 // against the tile's bounds in parallel (ppr_common/tile_culling.h) and keeps, in shared memory and
 // in projection order, the survivors and the possible occluders; each pixel then runs the
-// per-reflector logic over those lists only. With culling off the lists are all reflectors.
+// per-reflector logic over those lists only. The tests run over the frame's reflectors on screen
+// (the bounds pass's lists), not over all of them. With culling off the lists are all reflectors.
 // kThreads invocations per tile, each projecting every kThreads-th pixel: a specialization constant
 // (--set project_threads), since the best count depends on the device (ppr_project.h).
 layout(local_size_x_id = 0) in;
@@ -37,6 +38,7 @@ layout(set = 0, binding = 9, r32ui) uniform uimage2D glassAtlas;
 layout(set = 0, binding = 10, scalar) readonly buffer GlassRegions { GlassRegionData glassRegions[]; };  // per reflector
 layout(set = 0, binding = 11) uniform sampler2D normalTex;  // G-buffer normal (pc.facingOnly)
 layout(set = 0, binding = 12, scalar) readonly buffer ReachTiles { uint reachTiles[]; };  // pc.tileList: the tiles to project
+layout(set = 0, binding = 13, scalar) readonly buffer Visible { PprVisibleCounts visibleCounts; uint visibleLists[]; };
 layout(push_constant, scalar) uniform Push { PprProjectPush pc; };
 
 const uint kPixelsPerThread = kPprTileSize * kPprTileSize / kThreads;
@@ -123,14 +125,14 @@ void cullReflectors(vec3 lo, vec3 hi) {
     // order (at most 32 reflectors: kPprMaxReflectors / kThreads) into a bit mask, and its first
     // survivor's rank is the number of survivors in the runs before it, so the list never depends
     // on thread timing and the workgroup meets at one barrier whatever the reflector count.
-    uint perThread = (pc.reflectorCount + kThreads - 1u) / kThreads;
-    uint first = min(lid * perThread, pc.reflectorCount), last = min(first + perThread, pc.reflectorCount);
+    uint candidates = visibleCounts.reflecting;  // on screen, reflecting side seen, in projection order
+    uint perThread = (candidates + kThreads - 1u) / kThreads;
+    uint first = min(lid * perThread, candidates), last = min(first + perThread, candidates);
     uint verdicts = 0u;
     uvec4 reachMine = uvec4(0xFFFFu, 0xFFFFu, 0u, 0u);  // lo x, lo y, hi x, hi y
     for (uint k = first; k < last; ++k) {
-        uint i = projectionOrder[k];
+        uint i = visibleLists[k];
         PprReflectorBounds b = bounds[i];
-        if (b.reflects == 0u) continue;
         ReflectorData r = reflectors[i];
         // Reflectors beyond the per-plane tables are judged on their own rectangle alone.
         bool tabled = r.cullPlane != kPprNoCullPlane;
@@ -170,17 +172,17 @@ void cullReflectors(vec3 lo, vec3 hi) {
         }
     }
     for (uint bits = verdicts; bits != 0u; bits &= bits - 1u, ++rank) {
-        uint i = projectionOrder[first + uint(findLSB(bits))];
+        uint i = visibleLists[first + uint(findLSB(bits))];
         atomicOr(survivorWords[rank >> 1u], i << (16u * (rank & 1u)));  // neighbouring runs may share a word
     }
     if (lid == 0u) survivorCount = total;
     barrier();
-    // Possible occluders: every reflector (either side facing) whose screen rectangle meets the
-    // pixels the survivors can write to.
+    // Possible occluders: every reflector on screen (either side facing) whose screen rectangle meets
+    // the pixels the survivors can write to.
     uvec2 reach = uvec2(reachLoX | (reachLoY << 16u), reachHiX | (reachHiY << 16u));
-    for (uint base = 0u; base < pc.reflectorCount; base += kThreads) {
-        uint j = base + lid;
-        if (j < pc.reflectorCount && survivorCount > 0u && pprRectsOverlap(bounds[j].rect, reach)) {
+    for (uint base = 0u; base < visibleCounts.onScreen; base += kThreads) {
+        uint k = base + lid, j = k < visibleCounts.onScreen ? visibleLists[pc.reflectorCount + k] : 0u;
+        if (k < visibleCounts.onScreen && survivorCount > 0u && pprRectsOverlap(bounds[j].rect, reach)) {
             uint slot = atomicAdd(occluderCount, 1u);
             atomicOr(occluderWords[slot >> 1u], j << (16u * (slot & 1u)));
         }

@@ -62,7 +62,7 @@ PprProjectOutputs PprProjectPass::add(graph::RenderGraph& g, const FrameInputs& 
     graph::BufferHandle unused;
     if (inputs.reach) pass.storageRead(inputs.reach->tiles);  // binding 12
     else pass.storageWrite(g.createBuffer("ppr.reach.unused", {sizeof(uint32_t)}), &unused);
-    pass.push(push);
+    pass.storageRead(inputs.visible).push(push);
     if (inputs.reach) pass.dispatchIndirect(inputs.reach->args);
     else pass.dispatch(in.extent, gpu::kPprTileSize);
     return out;

@@ -30,7 +30,8 @@ struct PprTileList {
 struct PprProjectInputs {
     graph::ImageHandle depth;
     graph::ImageHandle intermediate;  // cleared
-    graph::BufferHandle bounds;       // ppr.bounds output
+    graph::BufferHandle bounds;       // ppr.bounds outputs: the rectangles
+    graph::BufferHandle visible;      // and the reflectors on screen (PprVisibleCounts and lists)
     graph::BufferHandle stats;        // PprFrameStats (counters added to)
     uint32_t tilesX = 0, tilesY = 0;
     bool cullTiles = true;            // --set tiles

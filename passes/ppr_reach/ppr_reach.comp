@@ -9,9 +9,9 @@
 
 // Before the projection pass, with per-tile culling and indirect dispatch: which screen tiles can be
 // reflected at all? kLanes invocations per tile find the world-space box of the tile's pixels, as the
-// projection pass does, and run the first test of its culling on it: with up to
-// kPprReachPerReflector reflectors reflector by reflector, beyond that per cull plane against the
-// union of the plane's rectangles. A tile that fails has no survivor in the projection's culling, so
+// projection pass does, and run the first test of its culling on it over the frame's reflectors on
+// screen (the bounds pass's list): with up to kPprReachPerReflector of them reflector by reflector,
+// beyond that per cull plane against the union of the plane's rectangles. A tile that fails has no survivor in the projection's culling, so
 // it would write nothing there: the projection is not dispatched for it. The rest are listed, in no
 // particular order, for the projection's indirect dispatch. Left-out tiles get a survivor count of 0
 // (debug=tiles).
@@ -28,6 +28,7 @@ layout(set = 0, binding = 5, scalar) buffer Args { TileDispatchArgs args; };
 layout(set = 0, binding = 6, scalar) writeonly buffer ReachTiles { uint reachTiles[]; };
 layout(set = 0, binding = 7, scalar) writeonly buffer TileSurvivors { uint tileSurvivors[]; };
 layout(set = 0, binding = 8, scalar) buffer Stats { PprFrameStats stats; };
+layout(set = 0, binding = 9, scalar) readonly buffer Visible { PprVisibleCounts visibleCounts; uint visibleLists[]; };
 layout(push_constant, scalar) uniform Push { PprReachPush pc; };
 
 const uint kTilesPerGroup = kPprReachGroupSize / kLanes;
@@ -47,11 +48,9 @@ void gatherPlaneRectangles() {
         planeHiX[p] = planeHiY[p] = 0u;
     }
     barrier();
-    for (uint i = lid; i < pc.reflectorCount; i += kPprReachGroupSize) {
-        PprReflectorBounds b = bounds[i];
-        // As in the projection's culling: a reflector the camera sees from behind keeps nothing, nor
-        // does an empty rectangle (it overlaps nothing).
-        if (b.reflects == 0u || !pprRectsOverlap(b.rect, b.rect)) continue;
+    for (uint k = lid; k < visibleCounts.reflecting; k += kPprReachGroupSize) {
+        uint i = visibleLists[k];
+        PprReflectorBounds b = bounds[i];  // listed: on screen, reflecting side seen
         uint plane = reflectors[i].cullPlane;
         if (plane == kPprNoCullPlane) {
             everyTile = 1u;
@@ -71,9 +70,9 @@ bool reachesAReflector(vec3 boxLo, vec3 boxHi, uint lane) {
     uint plane = kPprNoCullPlane;  // the plane `mirrored` and the hit region belong to
     uvec2 mirrored = uvec2(kPprEmptyRectLo, kPprEmptyRectHi);
     vec3 hitLo = vec3(0.0), hitHi = vec3(0.0);
-    for (uint i = lane; i < pc.reflectorCount; i += kLanes) {
+    for (uint k = lane; k < visibleCounts.reflecting; k += kLanes) {
+        uint i = visibleLists[k];
         PprReflectorBounds b = bounds[i];
-        if (b.reflects == 0u) continue;
         ReflectorData r = reflectors[i];
         // Coplanar reflectors are mostly neighbours: mirror once per run of one plane.
         if (r.cullPlane != kPprNoCullPlane && r.cullPlane != plane) {
@@ -112,7 +111,7 @@ void main() {
         tileHi[slot] = uvec3(0u);
         tileReached[slot] = 0u;
     }
-    if (pc.reflectorCount > kPprReachPerReflector) gatherPlaneRectangles();  // uniform: the push constant
+    if (visibleCounts.reflecting > kPprReachPerReflector) gatherPlaneRectangles();  // uniform: one value for all
     barrier();
 
     // The box of the tile's points, exactly as the projection pass reduces it (the same positions).
@@ -142,7 +141,7 @@ void main() {
     bool hasContent = inside && tileLo[slot].x <= tileHi[slot].x;
     if (hasContent) {
         vec3 boxLo = floatFromOrdered(tileLo[slot]), boxHi = floatFromOrdered(tileHi[slot]);
-        bool reached = pc.reflectorCount <= kPprReachPerReflector ? reachesAReflector(boxLo, boxHi, lane) : reachesAPlane(boxLo, boxHi, lane);
+        bool reached = visibleCounts.reflecting <= kPprReachPerReflector ? reachesAReflector(boxLo, boxHi, lane) : reachesAPlane(boxLo, boxHi, lane);
         if (reached) atomicOr(tileReached[slot], 1u);
     }
     barrier();

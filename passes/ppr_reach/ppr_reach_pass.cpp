@@ -69,6 +69,7 @@ PprTileList PprReachPass::add(graph::RenderGraph& g, const FrameInputs& in, cons
         .storageWrite(g.createBuffer("ppr.reach.tiles", {sizeof(uint32_t) * tileCount}), &out.tiles)
         .storageWrite(g.createBuffer("ppr.tile_survivors", {sizeof(uint32_t) * tileCount}), &out.tileSurvivors)
         .storageReadWrite(inputs.stats, &out.stats)
+        .storageRead(inputs.visible)
         .push(push)
         .dispatch(groupGrid(tileCount, lanes), gpu::kPprReachGroupSize);
     return out;

@@ -11,7 +11,8 @@ namespace ppr::passes {
 
 struct PprReachInputs {
     graph::ImageHandle depth;
-    graph::BufferHandle bounds;  // ppr.bounds output
+    graph::BufferHandle bounds;   // ppr.bounds outputs: the rectangles
+    graph::BufferHandle visible;  // and the reflectors on screen
     graph::BufferHandle stats;   // PprFrameStats (tilesWithContent added to)
     uint32_t tilesX = 0, tilesY = 0;
     uint32_t threads = 0;  // invocations per tile, one of kReachThreadChoices; 0: autoThreads

@@ -3,13 +3,17 @@
 // renders with a warning. Validation + synchronization validation on throughout.
 #include "gpu_test_util.hpp"
 #include "techniques/technique_table.hpp"
+#include "common/reflector_buffer.hpp"
 #include "ppr_common/encoding.h"
+#include "ppr_common/tile_culling.h"
 #include "ppr_common/tiles.h"
 #include "ppr_project/ppr_project_pass.hpp"
 #include "ppr_project/project_threads.hpp"
 #include "ppr_reach/ppr_reach_pass.hpp"
 #include "tile_classify/tile_classify_pass.hpp"
 #include "vk/live_objects.hpp"
+#include "scene/camera.hpp"
+#include "scene/reflector_groups.hpp"
 #include "scene/stress_scene.hpp"
 
 #include <nlohmann/json.hpp>
@@ -149,6 +153,39 @@ TEST(PprTiles, CullingKeepsFewReflectorsPerTile) {
     const Frame off = render(f, f.camera("overview"), "0", "1");
     ASSERT_TRUE(off.capture.pprStats);
     EXPECT_EQ(off.capture.pprStats->reflectorTilePairs, unculled);
+    EXPECT_EQ(f.ctx->validationErrors(), 0u);
+}
+
+// The bounds pass compacts the frame's reflectors: every tile's culling and the reach pass loop over
+// those on screen (either side: occluders) and those among them showing their reflecting side
+// (candidates). The counts are the host's, from the same shared header (within 2: a rectangle at
+// the screen's border may round the other way on the device), and the pictures are unchanged.
+TEST(PprTiles, CullingLoopsOverTheReflectorsOnScreen) {
+    GpuFixture f(scene::makeStressScene(1024));
+    const std::vector<gpu::ReflectorData> data = passes::ReflectorBuffer::pack(f.scene.reflectors, scene::groupReflectors(f.scene.reflectors));
+    const glm::vec2 screen(float(kSize.width), float(kSize.height));
+    for (const char* camera : {"overview", "reflective_5", "reflective_100"}) {
+        const scene::CameraPose pose = f.camera(camera);
+        const glm::mat4 viewProj = scene::projectionMatrix(pose.fovYDeg, screen.x / screen.y, scene::kNearPlane) * scene::viewMatrix(pose);
+        int onScreen = 0, reflecting = 0;
+        for (const gpu::ReflectorData& r : data) {
+            const gpu::PprReflectorBounds b = gpu::pprReflectorBounds(r, viewProj, pose.position, screen);
+            if (!gpu::pprRectsOverlap(b.rect, b.rect)) continue;
+            ++onScreen;
+            reflecting += b.reflects != 0u;
+        }
+        const Frame fr = render(f, pose, "1", "1");
+        ASSERT_TRUE(fr.capture.pprStats);
+        const gpu::PprFrameStats& s = *fr.capture.pprStats;
+        std::printf("%s: %u of 1024 on screen, %u reflecting (host: %d, %d), at most %u survive in a tile\n", camera, s.reflectorsOnScreen,
+                    s.reflectorsReflecting, onScreen, reflecting, s.maxTileSurvivors);
+        EXPECT_NEAR(int(s.reflectorsOnScreen), onScreen, 2) << camera;
+        EXPECT_NEAR(int(s.reflectorsReflecting), reflecting, 2) << camera;
+        EXPECT_LE(s.reflectorsReflecting, s.reflectorsOnScreen) << camera;
+        EXPECT_LE(s.maxTileSurvivors, s.reflectorsReflecting) << camera;
+        if (std::string(camera) != "overview") EXPECT_LT(s.reflectorsOnScreen, 1024u) << camera << ": the view leaves reflectors off screen";
+    }
+    expectTogglesChangeNothing(f, "reflective_5");
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
 

@@ -43,13 +43,14 @@ std::vector<VkDescriptorType> typesOf(const ReflectedLayout& r, uint32_t set) {
     return out;
 }
 
-TEST(ReflectShaders, PprProjectHasThirteenBindingsInOrder) {
+TEST(ReflectShaders, PprProjectHasFourteenBindingsInOrder) {
     const ReflectedLayout r = reflectSpirv(words(ppr_project_comp), "ppr_project.comp");
     ASSERT_EQ(r.sets.size(), 1u);
-    EXPECT_EQ(typesOf(r, 0), (std::vector<VkDescriptorType>{UBO, CIS, SSBO, SSBO, SI, SSBO, SSBO, SSBO, SSBO, SI, SSBO, CIS, SSBO}));
+    EXPECT_EQ(typesOf(r, 0), (std::vector<VkDescriptorType>{UBO, CIS, SSBO, SSBO, SI, SSBO, SSBO, SSBO, SSBO, SI, SSBO, CIS, SSBO, SSBO}));
     EXPECT_EQ(r.sets.at(0).at(1).name, "depthTex");
     EXPECT_EQ(r.sets.at(0).at(11).name, "normalTex");  // --set facing
     EXPECT_EQ(r.sets.at(0).at(12).name, "ReachTiles");  // the reach pass's list (indirect dispatch)
+    EXPECT_EQ(r.sets.at(0).at(13).name, "Visible");     // the bounds pass's compacted reflectors
     EXPECT_EQ(r.sets.at(0).at(4).name, "intermediate");
     ASSERT_TRUE(r.pushConstantBytes.has_value());
     EXPECT_EQ(*r.pushConstantBytes, sizeof(ppr::gpu::PprProjectPush));
