@@ -211,7 +211,7 @@ std::optional<PprCostParts> pprCostParts(const BenchTechnique& t) {
     for (const auto& [pass, ms] : t.passMs) {
         if (!t.costPasses.count(pass)) continue;
         if (pass.rfind("ppr.glass.", 0) == 0) parts.glass += ms;
-        else if (pass.rfind("hiz.", 0) == 0 || pass == "ppr.fallback") parts.fallback += ms;
+        else if (pass.rfind("hiz.", 0) == 0 || pass.rfind("ppr.fallback", 0) == 0) parts.fallback += ms;  // with .holes
         else parts.planar += ms;
     }
     return parts;

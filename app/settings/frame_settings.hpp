@@ -6,7 +6,7 @@
 
 namespace ppr::app {
 
-enum class PprFallback : uint32_t { Ssr, None };
+enum class PprFallback : uint32_t { Ssr, None, SsrHoles };
 enum class NormalMap : uint32_t { Off, Approx, Raymarch };
 enum class EnvSource : uint32_t { Sky, Probe };
 // PPR hole filling: none, the depth-aware rule (passes/ppr_common/ppr_resolve.glsl), or the slides' rule.

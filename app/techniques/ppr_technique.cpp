@@ -113,13 +113,14 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
     // The debug views PPR draws over the whole screen are left as they are.
     const uint32_t debug = reflect.debugView;
     const bool pprDebugView = debug == gpu::kDebugIntermediate || debug == gpu::kDebugHoles || debug == gpu::kDebugTiles;
-    if (s.fallback == PprFallback::Ssr && !pprDebugView) {
+    if (s.fallback != PprFallback::None && !pprDebugView) {
         passes::SsrInputs fallback = ssrInputs(f, tiles);
         const passes::HizAtlas hiz = f.depthHierarchy();
         fallback.hiz = hiz.image;
         fallback.hizLevels = hiz.levels;
         // The fallback's pixels get their path lengths from their SSR hits.
-        reflection = fallback_->addFallback(f.graph, f.in, fallback, reflection, "ppr.fallback", taa ? &distance : nullptr);
+        const bool holes = s.fallback == PprFallback::SsrHoles;  // PPR's holes too
+        reflection = fallback_->addFallback(f.graph, f.in, fallback, reflection, "ppr.fallback", holes, taa ? &distance : nullptr);
     }
     if (taa) f.board.put(ReflectionDistance{distance});
     return reflection;

@@ -18,6 +18,9 @@ PPR_CONST(uint, kSsrMappedNormals, 4u)  // reflector pixels reflect about the no
 PPR_CONST(uint, kSsrEnvironment, 8u)    // misses show the environment, hits fade into it at the border (--set fallback_env)
 PPR_CONST(uint, kSsrEnvironmentProbe, 16u)  // ... and the environment is the reflection probe (env_source=probe), else the sky
 PPR_CONST(uint, kSsrWriteDistance, 32u)  // write each shaded pixel's reflected path length, eye → surface → hit (0 = none; TAA)
+// Reflector pixels are shaded only where the reflection image holds none yet (kReflectionNone, or the
+// environment standing in for one): PPR's holes (--set fallback=ssr_holes).
+PPR_CONST(uint, kSsrHolesOnly, 64u)
 // Pixel classes shaded (SsrPush::pixelClasses): bit kTileClassPlanar = reflector-rectangle pixels,
 // bit kTileClassOther = reflective pixels no rectangle covers (rough or curved surfaces).
 

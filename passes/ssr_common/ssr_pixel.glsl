@@ -127,6 +127,10 @@ void main() {
     bool reflective = texelFetch(materialTex, pix, 0).b > 0.5;  // gbuffer.h: material b = reflective flag
     uint pixelClass = id != 0u ? kTileClassPlanar : (reflective ? kTileClassOther : kTileClassCount);
     bool shade = pixelClass != kTileClassCount && (pc.pixelClasses & (1u << pixelClass)) != 0u;
+    if (shade && pixelClass == kTileClassPlanar && (pc.flags & kSsrHolesOnly) != 0u) {
+        float kind = imageLoad(outReflection, pix).a;
+        if (kind != kReflectionNone && kind != kReflectionEnvironment) return;  // PPR's own reflection stays
+    }
     bool writeDistance = (pc.flags & kSsrWriteDistance) != 0u;
     if (!shade) {
         if ((pc.flags & kSsrWriteAll) != 0u) {

@@ -17,8 +17,9 @@ SsrTracePass::SsrTracePass(const vk::Context& ctx, shader::Spirv spirv, std::str
 
 graph::ImageHandle SsrTracePass::trace(graph::RenderGraph& g, const FrameInputs& in, const SsrInputs& inputs, graph::ImageHandle target,
                                        const std::string& passName, uint32_t pixelClasses, std::optional<uint32_t> listClass,
-                                       bool fresh, graph::ImageHandle* distance) const {
+                                       bool fresh, graph::ImageHandle* distance, uint32_t flags) const {
     gpu::SsrPush push{};
+    push.flags = flags;
     push.maxDistance = inputs.params.maxDistance;
     push.thickness = inputs.params.thickness;
     push.thicknessScale = inputs.params.thicknessScale;
@@ -78,9 +79,13 @@ graph::ImageHandle SsrTracePass::addTechnique(graph::RenderGraph& g, const Frame
 }
 
 graph::ImageHandle SsrTracePass::addFallback(graph::RenderGraph& g, const FrameInputs& in, const SsrInputs& inputs,
-                                             graph::ImageHandle reflection, const std::string& passName, graph::ImageHandle* distance) const {
+                                             graph::ImageHandle reflection, const std::string& passName, bool holes,
+                                             graph::ImageHandle* distance) const {
     const std::optional<uint32_t> list = inputs.indirect ? std::optional<uint32_t>(gpu::kTileClassOther) : std::nullopt;
-    return trace(g, in, inputs, reflection, passName, 1u << gpu::kTileClassOther, list, false, distance);
+    reflection = trace(g, in, inputs, reflection, passName, 1u << gpu::kTileClassOther, list, false, distance);
+    if (!holes) return reflection;
+    const std::optional<uint32_t> planar = inputs.indirect ? std::optional<uint32_t>(gpu::kTileClassPlanar) : std::nullopt;
+    return trace(g, in, inputs, reflection, passName + ".holes", 1u << gpu::kTileClassPlanar, planar, false, distance, gpu::kSsrHolesOnly);
 }
 
 }  // namespace ppr::passes

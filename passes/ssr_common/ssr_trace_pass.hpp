@@ -47,16 +47,18 @@ public:
     graph::ImageHandle addTechnique(graph::RenderGraph& g, const FrameInputs& in, const SsrInputs& inputs,
                                     graph::ImageHandle* distanceOut = nullptr) const;
     // Shades only reflective pixels that no reflector rectangle covers into `reflection` (read-write),
-    // in a pass named `passName`: over the non-planar tile list, or the whole screen. `distance`, when
-    // given, is the caller's path-length image: those pixels' lengths are written into it (in/out).
+    // in a pass named `passName`: over the non-planar tile list, or the whole screen. `holes`: then
+    // also the reflector pixels `reflection` holds no reflection for, in "<passName>.holes" (over the
+    // planar list). `distance`, when given, is the caller's path-length image: those pixels' lengths
+    // are written into it (in/out).
     graph::ImageHandle addFallback(graph::RenderGraph& g, const FrameInputs& in, const SsrInputs& inputs, graph::ImageHandle reflection,
-                                   const std::string& passName, graph::ImageHandle* distance = nullptr) const;
+                                   const std::string& passName, bool holes, graph::ImageHandle* distance = nullptr) const;
 
 private:
     // `distance`: the path-length image to write (updated to the pass's version), or none.
     graph::ImageHandle trace(graph::RenderGraph& g, const FrameInputs& in, const SsrInputs& inputs, graph::ImageHandle target,
                              const std::string& passName, uint32_t pixelClasses, std::optional<uint32_t> listClass, bool fresh,
-                             graph::ImageHandle* distance) const;
+                             graph::ImageHandle* distance, uint32_t flags = 0) const;
     const vk::Context& ctx_;
     std::string name_;
     bool usesHiz_;

@@ -122,5 +122,37 @@ TEST(NormalMaps, ApproximationAgainstTheRayTracedReference) {
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
 
+// fallback=ssr_holes: the SSR fallback also marches PPR's holes — on the normal-mapped camera the
+// pixels whose mapped ray finds what the flat reflection cannot. Every pixel PPR resolved keeps its
+// reflection bit for bit; the holes fill, and the score against the ray tracer rises.
+TEST(NormalMaps, HoleFallbackMarchesOnlyPprsHoles) {
+    PPR_SKIP_WITHOUT_RAY_QUERY();
+    GpuFixture f;
+    const app::FloatImage truth = reflection(f, "raytraced", "normalmap", "raymarch", false);
+    const float exposure = f.headless->settings().values().view.exposure;
+    const app::FloatImage plain = reflection(f, "ppr", "normalmap", "raymarch", false);
+    f.headless->settings().set("fallback", "ssr_holes");
+    const app::FloatImage marched = reflection(f, "ppr", "normalmap", "raymarch", false);
+    f.headless->settings().set("fallback", "ssr");
+    size_t filled = 0, holes = 0;
+    for (size_t i = 0; i < plain.rgba.size(); i += 4) {
+        if (plain.rgba[i + 3] == gpu::kReflectionNone) {
+            holes += truth.rgba[i + 3] == gpu::kReflectionHit;  // the ray tracer sees its reflected point on screen
+            filled += truth.rgba[i + 3] == gpu::kReflectionHit && marched.rgba[i + 3] == gpu::kReflectionHit;
+        } else {
+            EXPECT_EQ(std::memcmp(&plain.rgba[i], &marched.rgba[i], 4 * sizeof(float)), 0) << "pixel " << i / 4 << ": PPR's own reflection changed";
+        }
+    }
+    const app::ReflectionScore before = app::scoreReflection(plain, truth, exposure), after = app::scoreReflection(marched, truth, exposure);
+    std::printf("holes whose reflected point is on screen %zu, marched %zu; %.2f -> %.2f dB, coverage %.4f -> %.4f\n", holes, filled,
+                before.psnrDb, after.psnrDb, before.coverage, after.coverage);
+    // Measured at 320x180 (2026-11-27): 43 holes, all marched; 17.25 -> 24.63 dB, coverage 0.9640 -> 1.0000.
+    EXPECT_GT(holes, 20u) << "the view should show PPR's holes";
+    EXPECT_GE(filled * 10, holes * 9) << "the march finds nearly every hole's reflection";
+    EXPECT_GT(after.coverage, before.coverage);
+    EXPECT_GT(after.psnrDb, before.psnrDb + 3.0);
+    EXPECT_EQ(f.ctx->validationErrors(), 0u);
+}
+
 }  // namespace
 }  // namespace ppr::test
