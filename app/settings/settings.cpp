@@ -153,10 +153,11 @@ const std::vector<SettingDecl>& settingDecls() {
                      passes::kClassifyThreadChoices,
                      "tile classification: invocations per 16x16 tile (auto: 16 on a CPU device, 64 on a GPU); the same "
                      "tile classes with any"),
-        choice<PprFallback>("fallback", "ppr", [](FrameSettings& s) -> PprFallback& { return s.ppr.fallback; }, {"ssr", "none", "ssr_holes"}, "ssr",
+        choice<PprFallback>("fallback", "ppr", [](FrameSettings& s) -> PprFallback& { return s.ppr.fallback; }, {"ssr", "none", "ssr_holes"},
+                            "ssr_holes",
                             "PPR: reflective pixels no reflector rectangle covers (curved, rough) get ssr-hiz over the non-planar tiles, or "
-                            "nothing; ssr_holes: also PPR's holes (reflector pixels nothing was projected to, such as a normal-mapped "
-                            "ray finding what the flat reflection cannot: ppr.fallback.holes over the planar tiles)"),
+                            "nothing; ssr_holes: also PPR's holes on normal-mapped reflectors (pixels nothing was projected to, where "
+                            "the mapped ray finds what the flat reflection cannot: ppr.fallback.holes over the planar tiles)"),
         choice<NormalMap>("normalmap", "ppr, ssr, raytraced", [](FrameSettings& s) -> NormalMap& { return s.ppr.normalMap; }, {"off", "approx", "raymarch"},
                           "raymarch",
                           "normal-mapped reflectors: off (flat mirrors); PPR: approx (reflect about the mapped normal at the flat "

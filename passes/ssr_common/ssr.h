@@ -19,7 +19,8 @@ PPR_CONST(uint, kSsrEnvironment, 8u)    // misses show the environment, hits fad
 PPR_CONST(uint, kSsrEnvironmentProbe, 16u)  // ... and the environment is the reflection probe (env_source=probe), else the sky
 PPR_CONST(uint, kSsrWriteDistance, 32u)  // write each shaded pixel's reflected path length, eye → surface → hit (0 = none; TAA)
 // Reflector pixels are shaded only where the reflection image holds none yet (kReflectionNone, or the
-// environment standing in for one): PPR's holes (--set fallback=ssr_holes).
+// environment standing in for one) and the mapped normal leaves the plane: PPR's holes on
+// normal-mapped reflectors (--set fallback=ssr_holes).
 PPR_CONST(uint, kSsrHolesOnly, 64u)
 // Pixel classes shaded (SsrPush::pixelClasses): bit kTileClassPlanar = reflector-rectangle pixels,
 // bit kTileClassOther = reflective pixels no rectangle covers (rough or curved surfaces).

@@ -130,6 +130,10 @@ void main() {
     if (shade && pixelClass == kTileClassPlanar && (pc.flags & kSsrHolesOnly) != 0u) {
         float kind = imageLoad(outReflection, pix).a;
         if (kind != kReflectionNone && kind != kReflectionEnvironment) return;  // PPR's own reflection stays
+        // Only where the mapped normal leaves the plane: on a flat mirror a hole is a point nothing on
+        // screen shows, which the same ray marched would not find either.
+        vec3 mapped = normalize(texelFetch(normalTex, pix, 0).xyz);
+        if ((pc.flags & kSsrMappedNormals) == 0u || dot(mapped, reflectors[id - 1u].normal) >= kFlatNormalCos) return;
     }
     bool writeDistance = (pc.flags & kSsrWriteDistance) != 0u;
     if (!shade) {

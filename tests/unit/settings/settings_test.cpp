@@ -35,7 +35,7 @@ TEST(Settings, DecodesIntoTypedFields) {
     const FrameSettings& v = s.values();
     EXPECT_EQ(v.ppr.holes, HoleRule::Enclosed);
     EXPECT_TRUE(v.ppr.facing && v.ppr.filter && v.ppr.antibleed && v.ppr.tiles && v.tiles.indirect && v.glass.enabled);
-    EXPECT_EQ(v.ppr.fallback, PprFallback::Ssr);
+    EXPECT_EQ(v.ppr.fallback, PprFallback::SsrHoles);
     EXPECT_FLOAT_EQ(v.ssr.distance, 40.0f);
     EXPECT_EQ(v.ssr.thickness, 0.05f);
     EXPECT_EQ(v.ssr.steps, 4096u);
