@@ -163,6 +163,9 @@ const std::vector<SettingDecl>& settingDecls() {
                           "normal-mapped reflectors: off (flat mirrors); PPR: approx (reflect about the mapped normal at the flat "
                           "reflection distance), raymarch (4 depth-tested taps along that ray, else flat); SSR and raytraced "
                           "reflect about the mapped normal unless off"),
+        toggle("normal_refine", "ppr", [](FrameSettings& s) -> bool& { return s.ppr.normalRefine; }, true,
+               "normalmap=raymarch: the taken tap moves by bisection toward where the ray crosses the depth buffer "
+               "(0: the slides' 4 taps alone)"),
         toggle("fallback_env", "env", [](FrameSettings& s) -> bool& { return s.env.fallback; }, false,
                "reflections that leave the screen or find nothing show the environment (env_source), blended in near the screen edges (0: black)"),
         choice<EnvSource>("env_source", "env", [](FrameSettings& s) -> EnvSource& { return s.env.source; }, {"sky", "probe"}, "probe",

@@ -23,6 +23,7 @@ uint32_t reflectFlags(const FrameSettings& s) {  // the screen's reflection pass
     uint32_t flags = resolveFlags(s.ppr);
     if (s.ppr.normalMap == NormalMap::Approx) flags |= gpu::kPprNormalApprox;
     if (s.ppr.normalMap == NormalMap::Raymarch) flags |= gpu::kPprNormalRaymarch;
+    if (s.ppr.normalMap == NormalMap::Raymarch && s.ppr.normalRefine) flags |= gpu::kPprNormalRefine;
     if (s.env.fallback) flags |= gpu::kPprEnvironment;
     if (s.tiles.indirect) flags |= gpu::kPprIndirect;
     return flags;

@@ -58,12 +58,22 @@ bool projectToScreen(vec3 p, out vec2 pixel, out float w) {
     return h.w > frame.cameraPos.w && all(greaterThanEqual(pixel, vec2(0.0))) && all(lessThan(pixel, frame.screenSize));
 }
 
+// Whether the point `t` along the ray from `surface` is on screen and not behind the depth buffer.
+bool visibleAlongRay(vec3 surface, vec3 dir, float t, out vec2 pixel, out bool onScreen) {
+    float w;
+    onScreen = projectToScreen(surface + dir * t, pixel, w);
+    if (!onScreen) return false;
+    float d = texelFetch(depthTex, ivec2(pixel), 0).r;
+    return w <= (d > 0.0 ? frame.cameraPos.w / d : 1e30) * 1.001;  // in front of (or on) what the camera sees
+}
+
 // The bonus slides' normal-map approximation. The flat reflection found the reflected point at
 // `flatSource` (pixels); its distance from the surface point stands for the distance along the ray
 // reflected about the normal-mapped normal. approx: the point that far along that ray, projected.
 // raymarch: kPprNormalTaps points from there back toward the reflecting pixel; the first one not
 // hidden behind the depth buffer is taken (an approximated point behind a nearer object would fetch
-// that object: the disocclusion the slides show). False: keep the flat reflection.
+// that object: the disocclusion the slides show); with normal_refine it moves toward the previous tap
+// where that one was hidden. False: keep the flat reflection.
 bool normalMappedHit(vec3 surface, vec3 dir, vec2 flatSource, out vec2 hitPixel) {
     ivec2 src = clamp(ivec2(flatSource), ivec2(0), ivec2(frame.screenSize) - 1);
     float srcDepth = texelFetch(depthTex, src, 0).r;
@@ -72,15 +82,30 @@ bool normalMappedHit(vec3 surface, vec3 dir, vec2 flatSource, out vec2 hitPixel)
     float w;
     if ((pc.flags & kPprNormalRaymarch) == 0u) return projectToScreen(surface + dir * dist, hitPixel, w);
     float step = dist / float(kPprNormalTaps);
+    bool previousHidden = false;  // the previous tap lies on screen behind the depth buffer
     for (uint k = 0u; k < kPprNormalTaps; ++k) {
-        vec2 p;
-        if (!projectToScreen(surface + dir * (dist - step * float(k)), p, w)) continue;
-        float d = texelFetch(depthTex, ivec2(p), 0).r;
-        float s = d > 0.0 ? frame.cameraPos.w / d : 1e30;
-        if (w <= s * 1.001) {  // in front of (or on) what the camera sees there
-            hitPixel = p;
-            return true;
+        float t = dist - step * float(k);
+        bool onScreen;
+        if (!visibleAlongRay(surface, dir, t, hitPixel, onScreen)) {
+            previousHidden = onScreen;
+            continue;
         }
+        // The ray passed behind the depth buffer between the previous tap and this one: the taken point
+        // moves toward that crossing, where the ray meets what it reflects, not the free space before it.
+        if (previousHidden && (pc.flags & kPprNormalRefine) != 0u) {
+            float visible = t, hidden = t + step;
+            for (uint i = 0u; i < kPprNormalRefineSteps; ++i) {
+                float mid = 0.5 * (visible + hidden);
+                vec2 p;
+                if (visibleAlongRay(surface, dir, mid, p, onScreen)) {
+                    visible = mid;
+                    hitPixel = p;
+                } else {
+                    hidden = mid;
+                }
+            }
+        }
+        return true;
     }
     return false;
 }

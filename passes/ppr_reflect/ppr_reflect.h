@@ -20,6 +20,8 @@ PPR_CONST(uint, kPprEnvironmentProbe, 128u)
 PPR_CONST(uint, kPprHoleEnclosed, 256u)
 // TAA's reflection history: also write the reflected path length per pixel (outDistance).
 PPR_CONST(uint, kPprWriteDistance, 512u)
+// --set normal_refine=1: raymarch bisects toward the crossing before the taken tap.
+PPR_CONST(uint, kPprNormalRefine, 1024u)
 // How far (texels) the depth-aware rule looks on each side for the enclosing nearer layer.
 PPR_CONST(int, kPprHoleReach, 2)
 // How far (texels) it looks for the far side of a magnified nearer layer around a texel with data.
@@ -35,6 +37,9 @@ PPR_CONST(float, kPprFootprintMaxStep, 24.0f)
 PPR_CONST(float, kPprFootprintMinStep, 1.5f)
 // Taps of the normalmap=raymarch march between the pixel and the approximated reflection.
 PPR_CONST(uint, kPprNormalTaps, 4u)
+// normal_refine=1: bisection steps between the last hidden tap and the first visible one, toward
+// where the ray crosses the depth buffer.
+PPR_CONST(uint, kPprNormalRefineSteps, 5u)
 // Hole filling replaces a pixel's own data only when a neighbour's offset is this much shorter
 // (pixels; the slides' value).
 PPR_CONST(float, kPprHoleMinDistance, 6.0f)
