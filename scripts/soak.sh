@@ -7,6 +7,9 @@
 #    to the end and reported per 1 000 frames.
 # 2. Viewer: `ppr view` under Xvfb for S seconds (default 600) driving itself (PPR_VIEWER_SOAK=1:
 #    techniques, random setting values, window sizes from 1x1 up, iconify/restore).
+# --heaptrack: run each capture under heaptrack (Debian package `heaptrack`) and name the allocation
+#    sites whose live heap floor grew between the early and the late part of the run
+#    (scripts/heap_floor.py): the resident figure cannot tell whose memory moved, this can.
 # --no-capture / --no-viewer skip a part. Prints a summary table; exit 1 if VMA allocations, bytes or Vulkan object counts grew after warm-up,
 # or any run failed. Resident memory growth is reported (the allocator and driver caches make it noisy),
 # and fails only above --rss-limit KiB per 1 000 frames (default 64).
@@ -15,7 +18,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 ppr="$root/build/release/bin/ppr"
 frames=5000; seconds=600; size=64x64; viewer=1; rss_limit=64; warmup=1000; every=100
 techniques=""
-capture=1
+capture=1; heaptrack=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --frames) frames="$2"; shift 2 ;;
@@ -28,10 +31,14 @@ while [ $# -gt 0 ]; do
     --warmup) warmup="$2"; shift 2 ;;
     --every) every="$2"; shift 2 ;;
     --techniques) techniques="$2"; shift 2 ;;
+    --heaptrack) heaptrack=1; shift ;;
     *) echo "soak: unknown argument $1" >&2; exit 2 ;;
   esac
 done
 work="$(mktemp -d)"
+if [ $heaptrack -eq 1 ] && ! command -v heaptrack >/dev/null; then
+  echo "soak: --heaptrack needs heaptrack (sudo apt-get install heaptrack)" >&2; exit 2
+fi
 if [ -z "$techniques" ]; then
   techniques=$("$ppr" --help | sed -n '/^  --technique/,/^  --reference/p' | sed -nE 's/^    ([a-z][a-z-]*) {2,}.*/\1/p' | tr '\n' ' ')
 fi
@@ -86,8 +93,12 @@ report() {  # name log rc [warm-up frame]
 [ $capture -eq 0 ] && techniques=""
 for t in $techniques; do
   log="$work/capture-$t.log"
-  PPR_MEMORY_LOG=$every "$ppr" capture --technique "$t" --camera overview --size "$size" --set shadowres=256 --frames "$frames" --out "$work/$t" >"$log" 2>&1
+  wrap=(); [ $heaptrack -eq 1 ] && wrap=(heaptrack -o "$work/heap-$t")
+  PPR_MEMORY_LOG=$every "${wrap[@]}" "$ppr" capture --technique "$t" --camera overview --size "$size" --set shadowres=256 --frames "$frames" --out "$work/$t" >"$log" 2>&1
   report "$t" "$log" $?
+  if [ $heaptrack -eq 1 ]; then
+    python3 "$root/scripts/heap_floor.py" "$work/heap-$t.zst" | sed 's/^/    /' || fail=1
+  fi
 done
 
 if [ $viewer -eq 1 ]; then
