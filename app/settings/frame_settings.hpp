@@ -37,7 +37,7 @@ struct PprSettings {         // owner: ppr
     uint32_t reachThreads;   // the reach pass's invocations per tile (passes/ppr_reach/reach_threads.hpp); 0: auto
     PprFallback fallback;
     NormalMap normalMap;     // the bonus slides' normal-map approximation in the reflection pass
-    bool normalRefine;       // raymarch: bisect toward where the ray crosses the depth buffer
+    bool normalRefine;       // raymarch: find where the ray crosses the depth buffer
 };
 struct SsrSettings {         // owner: ssr (the four ssr-* techniques and PPR's fallback)
     float distance, thickness, thicknessScale;

@@ -164,8 +164,8 @@ const std::vector<SettingDecl>& settingDecls() {
                           "reflection distance), raymarch (4 depth-tested taps along that ray, else flat); SSR and raytraced "
                           "reflect about the mapped normal unless off"),
         toggle("normal_refine", "ppr", [](FrameSettings& s) -> bool& { return s.ppr.normalRefine; }, true,
-               "normalmap=raymarch: the taken tap moves by bisection toward where the ray crosses the depth buffer "
-               "(0: the slides' 4 taps alone)"),
+               "normalmap=raymarch: find where the ray crosses the depth buffer (bisect after a hidden tap, walk on past "
+               "an approximated point that is not hidden; 0: the slides' 4 taps alone)"),
         toggle("fallback_env", "env", [](FrameSettings& s) -> bool& { return s.env.fallback; }, false,
                "reflections that leave the screen or find nothing show the environment (env_source), blended in near the screen edges (0: black)"),
         choice<EnvSource>("env_source", "env", [](FrameSettings& s) -> EnvSource& { return s.env.source; }, {"sky", "probe"}, "probe",

@@ -72,8 +72,10 @@ bool visibleAlongRay(vec3 surface, vec3 dir, float t, out vec2 pixel, out bool o
 // reflected about the normal-mapped normal. approx: the point that far along that ray, projected.
 // raymarch: kPprNormalTaps points from there back toward the reflecting pixel; the first one not
 // hidden behind the depth buffer is taken (an approximated point behind a nearer object would fetch
-// that object: the disocclusion the slides show); with normal_refine it moves toward the previous tap
-// where that one was hidden. False: keep the flat reflection.
+// that object: the disocclusion the slides show). With normal_refine, a taken point that follows a
+// hidden one moves by bisection to where the ray crosses the depth buffer, and an approximated point
+// that is not hidden first walks on along the ray to find that crossing. False: keep the flat
+// reflection.
 bool normalMappedHit(vec3 surface, vec3 dir, vec2 flatSource, out vec2 hitPixel) {
     ivec2 src = clamp(ivec2(flatSource), ivec2(0), ivec2(frame.screenSize) - 1);
     float srcDepth = texelFetch(depthTex, src, 0).r;
@@ -82,7 +84,8 @@ bool normalMappedHit(vec3 surface, vec3 dir, vec2 flatSource, out vec2 hitPixel)
     float w;
     if ((pc.flags & kPprNormalRaymarch) == 0u) return projectToScreen(surface + dir * dist, hitPixel, w);
     float step = dist / float(kPprNormalTaps);
-    bool previousHidden = false;  // the previous tap lies on screen behind the depth buffer
+    bool refine = (pc.flags & kPprNormalRefine) != 0u;
+    bool previousHidden = false;  // the point farther along the ray lies on screen behind the depth buffer
     for (uint k = 0u; k < kPprNormalTaps; ++k) {
         float t = dist - step * float(k);
         bool onScreen;
@@ -90,10 +93,31 @@ bool normalMappedHit(vec3 surface, vec3 dir, vec2 flatSource, out vec2 hitPixel)
             previousHidden = onScreen;
             continue;
         }
-        // The ray passed behind the depth buffer between the previous tap and this one: the taken point
-        // moves toward that crossing, where the ray meets what it reflects, not the free space before it.
-        if (previousHidden && (pc.flags & kPprNormalRefine) != 0u) {
-            float visible = t, hidden = t + step;
+        float visible = t, hidden = t + step;
+        if (refine && k == 0u) {
+            // The approximated point itself is in front of the depth buffer: along the mapped ray,
+            // what it reflects lies farther than the flat distance. Walk on in short steps; the last
+            // point still in front is the nearest known to the hit, crossing found or not.
+            float ahead = step * kPprNormalAheadStep;
+            for (uint j = 1u; j <= kPprNormalAheadSteps; ++j) {
+                vec2 p;
+                float next = dist + ahead * float(j);
+                if (visibleAlongRay(surface, dir, next, p, onScreen)) {
+                    visible = next;
+                    hitPixel = p;
+                    continue;
+                }
+                if (onScreen) {
+                    previousHidden = true;
+                    hidden = next;
+                }
+                break;
+            }
+        }
+        // The ray passed behind the depth buffer between the last visible point and the hidden one
+        // after it: the taken point moves toward that crossing, where the ray meets what it reflects,
+        // not the free space before it.
+        if (previousHidden && refine) {
             for (uint i = 0u; i < kPprNormalRefineSteps; ++i) {
                 float mid = 0.5 * (visible + hidden);
                 vec2 p;

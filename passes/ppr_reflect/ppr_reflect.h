@@ -20,7 +20,7 @@ PPR_CONST(uint, kPprEnvironmentProbe, 128u)
 PPR_CONST(uint, kPprHoleEnclosed, 256u)
 // TAA's reflection history: also write the reflected path length per pixel (outDistance).
 PPR_CONST(uint, kPprWriteDistance, 512u)
-// --set normal_refine=1: raymarch bisects toward the crossing before the taken tap.
+// --set normal_refine=1: raymarch looks for where the ray crosses the depth buffer (ppr_reflect.comp).
 PPR_CONST(uint, kPprNormalRefine, 1024u)
 // How far (texels) the depth-aware rule looks on each side for the enclosing nearer layer.
 PPR_CONST(int, kPprHoleReach, 2)
@@ -40,6 +40,10 @@ PPR_CONST(uint, kPprNormalTaps, 4u)
 // normal_refine=1: bisection steps between the last hidden tap and the first visible one, toward
 // where the ray crosses the depth buffer.
 PPR_CONST(uint, kPprNormalRefineSteps, 5u)
+// normal_refine=1, where the approximated point is not hidden: up to this many steps on along the
+// ray, each this fraction of the taps' spacing, looking for where it falls behind the depth buffer.
+PPR_CONST(uint, kPprNormalAheadSteps, 8u)
+PPR_CONST(float, kPprNormalAheadStep, 0.25f)
 // Hole filling replaces a pixel's own data only when a neighbour's offset is this much shorter
 // (pixels; the slides' value).
 PPR_CONST(float, kPprHoleMinDistance, 6.0f)
