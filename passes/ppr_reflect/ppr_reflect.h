@@ -37,8 +37,8 @@ PPR_CONST(float, kPprFootprintMaxStep, 24.0f)
 PPR_CONST(float, kPprFootprintMinStep, 1.5f)
 // Taps of the normalmap=raymarch march between the pixel and the approximated reflection.
 PPR_CONST(uint, kPprNormalTaps, 4u)
-// normal_refine=1: bisection steps between the last hidden tap and the first visible one, toward
-// where the ray crosses the depth buffer.
+// normal_refine=1: bisection steps between a visible point of the ray and the hidden one after it,
+// toward where the ray crosses the depth buffer.
 PPR_CONST(uint, kPprNormalRefineSteps, 5u)
 // normal_refine=1, where the approximated point is not hidden: up to this many steps on along the
 // ray, each this fraction of the taps' spacing, looking for where it falls behind the depth buffer.

@@ -11,7 +11,7 @@
 // `current` holds the settings the current build adds to keep the old behaviour (options the
 // recording build did not have; taa=0, the default, is spelled out: it must render today's images;
 // fallback=ssr: PPR's holes unmarched, as before fallback=ssr_holes became the default;
-// normal_refine=0: the slides' raymarch taps without the bisection).
+// normal_refine=0: the slides' raymarch taps without the search for the crossing).
 // On another device (another driver rasterizes and rounds differently) the test is skipped with a
 // message: goldens are per device. One device name can still round differently from host to host
 // (llvmpipe compiles shaders for the CPU it runs on), so a file holds one or more recordings, each
