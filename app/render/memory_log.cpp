@@ -7,6 +7,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 namespace ppr::app {
 
@@ -68,7 +69,27 @@ uint64_t memoryLogInterval() {
     return interval;
 }
 
+uint64_t memoryTestLeakBytes() {
+    static const uint64_t bytes = [] {
+        const char* v = std::getenv("PPR_MEMORY_TEST_LEAK");
+        return v ? std::strtoull(v, nullptr, 10) : 0ull;
+    }();
+    return bytes;
+}
+
+namespace {
+char* volatile lastTestLeak = nullptr;  // keeps the compiler from dropping the allocation
+}
+
 void logMemoryEvery(const vk::Context& ctx, uint64_t frame) {
+    if (const uint64_t leak = memoryTestLeakBytes()) {
+        // Never freed: the soak's self-test proves with it that its statistic sees a leak this size.
+        // Written to, so that its pages are resident as well as counted by malloc.
+        if (char* block = static_cast<char*>(std::malloc(leak))) {
+            std::memset(block, 1, leak);
+            lastTestLeak = block;
+        }
+    }
     const uint64_t every = memoryLogInterval();
     if (every == 0 || frame % every != 0) return;
     // Sampled with the device idle: a frame still in flight holds command memory in the driver (up to

@@ -26,8 +26,12 @@ std::string formatMemorySample(const MemorySample& s);  // "ppr: memory frame=..
 // Frames between samples from PPR_MEMORY_LOG (0 = off).
 uint64_t memoryLogInterval();
 
+// PPR_MEMORY_TEST_LEAK=N: leak N bytes every frame on purpose. Only the soak's self-test sets it
+// (tests/gpu/CMakeLists.txt), to prove that scripts/soak.sh fails on a leak; 0 or unset = none.
+uint64_t memoryTestLeakBytes();
+
 // Prints a sample when logging is on and `frame` is a multiple of the interval (waits for the device
-// to be idle first).
+// to be idle first); leaks PPR_MEMORY_TEST_LEAK bytes first when that is set. Called every frame.
 void logMemoryEvery(const vk::Context& ctx, uint64_t frame);
 
 }  // namespace ppr::app
