@@ -118,15 +118,22 @@ void main() {
     if (inside) {
         uvec3 lo = uvec3(0xFFFFFFFFu), hi = uvec3(0u);
         ivec2 origin = ivec2(tile) * int(kPprTileSize);
-        for (uint k = lane; k < kPprTileSize * kPprTileSize; k += kLanes) {
-            ivec2 pix = origin + ivec2(k % kPprTileSize, k / kPprTileSize);
-            if (any(greaterThanEqual(pix, ivec2(frame.screenSize)))) continue;
-            float depth = texelFetch(depthTex, pix, 0).r;
-            if (depth <= 0.0) continue;  // sky
-            vec3 p = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depth);
-            uvec3 ordered = orderedFromFloat(p);
-            lo = min(lo, ordered);
-            hi = max(hi, ordered);
+        // 2x2 pixel quads, one gather each; textureGather's order: (0,1), (1,1), (1,0), (0,0).
+        const uint quadsPerRow = kPprTileSize / 2u;
+        const ivec2 corners[4] = ivec2[4](ivec2(0, 1), ivec2(1, 1), ivec2(1, 0), ivec2(0, 0));
+        for (uint k = lane; k < quadsPerRow * quadsPerRow; k += kLanes) {
+            ivec2 quad = origin + 2 * ivec2(k % quadsPerRow, k / quadsPerRow);
+            if (any(greaterThanEqual(quad, ivec2(frame.screenSize)))) continue;
+            vec4 depths = textureGather(depthTex, vec2(quad + 1) * frame.invScreenSize, 0);
+            for (uint c = 0u; c < 4u; ++c) {
+                ivec2 pix = quad + corners[c];
+                // sky, or beyond the screen (where the clamped gather repeats the edge)
+                if (depths[c] <= 0.0 || any(greaterThanEqual(pix, ivec2(frame.screenSize)))) continue;
+                vec3 p = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depths[c]);
+                uvec3 ordered = orderedFromFloat(p);
+                lo = min(lo, ordered);
+                hi = max(hi, ordered);
+            }
         }
         if (lo.x <= hi.x) {
             atomicMin(tileLo[slot].x, lo.x);

@@ -27,13 +27,18 @@ void main() {
     barrier();
     uint bits = 0u;
     ivec2 origin = ivec2(gl_WorkGroupID.xy) * int(kPprTileSize);
-    for (uint i = gl_LocalInvocationIndex; i < kPprTileSize * kPprTileSize; i += kThreads) {
-        ivec2 pix = origin + ivec2(i % kPprTileSize, i / kPprTileSize);
+    // 2x2 pixel quads: one gather per texture reads four pixels. Beyond the screen's last row or
+    // column the clamp-to-edge sampler repeats that row or column, which lies in this same tile.
+    const uint quadsPerRow = kPprTileSize / 2u;
+    for (uint i = gl_LocalInvocationIndex; i < quadsPerRow * quadsPerRow; i += kThreads) {
+        ivec2 pix = origin + 2 * ivec2(i % quadsPerRow, i / quadsPerRow);
         if (any(greaterThanEqual(pix, ivec2(frame.screenSize)))) continue;
-        uint id = texelFetch(reflectorTex, pix, 0).r;
-        bool reflective = texelFetch(materialTex, pix, 0).b > 0.5;  // gbuffer.h: material b = reflective flag
-        if (id != 0u && id <= pc.maxReflectorId) bits |= 1u << kTileClassPlanar;
-        else if (reflective && id == 0u) bits |= 1u << kTileClassOther;
+        vec2 corner = vec2(pix + 1) * frame.invScreenSize;  // the quad's shared corner
+        uvec4 ids = textureGather(reflectorTex, corner, 0);
+        vec4 reflective = textureGather(materialTex, corner, 2);  // gbuffer.h: material b = reflective flag
+        // 1 <= id <= maxReflectorId as one unsigned compare (id 0 wraps to the largest value)
+        if (any(lessThan(ids - 1u, uvec4(pc.maxReflectorId)))) bits |= 1u << kTileClassPlanar;
+        if (any(greaterThan(mix(vec4(0.0), reflective, equal(ids, uvec4(0u))), vec4(0.5)))) bits |= 1u << kTileClassOther;
     }
     bits = subgroupOr(bits);
     if (subgroupElect() && bits != 0u) atomicOr(classBits, bits);
