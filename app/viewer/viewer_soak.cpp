@@ -31,6 +31,13 @@ bool ViewerSoak::step(uint64_t frame, GLFWwindow* window, Settings& settings, st
     if (iconifiedFor_ > 0 && --iconifiedFor_ == 0) glfwRestoreWindow(window);
     if (frame == lastFrame_) return false;  // act once per presented frame (the loop also spins while minimised)
     lastFrame_ = frame;
+    if (warmup_.empty() && frame == 0)
+        for (const SettingDecl& d : settingDecls())
+            for (const std::string& choice : d.choices) warmup_.emplace_back(d.key, choice);
+    if (frame < warmup_.size()) {  // warm-up: every choice once, with the home technique
+        settings.set(warmup_[frame].first, warmup_[frame].second);
+        return false;
+    }
     const uint64_t phase = frame % kCycle;
     if (phase == kCycle - kHome) {  // home: the state every sample is taken in
         if (iconifiedFor_ > 0) glfwRestoreWindow(window), iconifiedFor_ = 0;

@@ -6,11 +6,16 @@
 // Every kCycle frames it comes home for kHome frames (the first technique, default settings, the
 // initial window size) and asks for a memory sample at the end: the soak compares those samples, taken
 // in the same state, since the graph's transient pool rightly follows the window size and settings.
+// It starts with a warm-up: every choice of every declared setting once, one a frame, with the first
+// technique, so that what is made once when a value is first asked for (a workgroup width's
+// pipeline) is made before the first sample, as the headless soak's warm-up frames make theirs.
 #include "settings/settings.hpp"
 
 #include <cstdint>
 #include <random>
 #include <string>
+#include <utility>
+#include <vector>
 
 struct GLFWwindow;
 
@@ -30,6 +35,7 @@ private:
     std::mt19937 rng_{20261124u};
     uint64_t lastFrame_ = ~0ull;
     int iconifiedFor_ = 0;  // loop iterations left before restoring
+    std::vector<std::pair<std::string, std::string>> warmup_;  // (key, choice) for each frame of the warm-up
 };
 
 }  // namespace ppr::app

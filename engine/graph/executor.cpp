@@ -231,6 +231,7 @@ void GraphExecutor::trimPool(uint32_t unusedFrames) {
         if (stale(p)) vk::destroyBuffer(ctx_, p.object);
     std::erase_if(images_, stale);
     std::erase_if(buffers_, stale);
+    history_->trim(unusedFrames);  // history of a mode switched off, too
 }
 
 template <class Entry, class Create>

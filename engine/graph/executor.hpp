@@ -41,8 +41,9 @@ public:
     // times, in execution order. Empty if nothing was recorded in that slot yet.
     std::vector<PassTiming> readTimings(uint32_t frameSlot);
 
-    // Destroys pooled resources that have not been used for `unusedFrames` executions
-    // (e.g. after a resize). Call only when the device is idle or the resources are no longer in use.
+    // Destroys pooled resources, and history entries, that have not been used for `unusedFrames`
+    // executions (e.g. after a resize). Call only when the device is idle or the resources are no
+    // longer in use.
     void trimPool(uint32_t unusedFrames);
     size_t pooledImageCount() const { return images_.size(); }
     size_t pooledBufferCount() const { return buffers_.size(); }

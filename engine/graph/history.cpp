@@ -84,6 +84,7 @@ HistoryStore::Entry& HistoryStore::begin(const std::string& name, bool isImage) 
     // Two requests in one frame would hand out the same `current` twice, or mean endFrame() is missing
     // and the pair never swaps; both silently break temporal filters.
     if (e.requested) fail(label(name) + " requested twice in one frame (endFrame() not called since?)");
+    e.lastRequestedFrame = frame_;
     return e;
 }
 
@@ -154,6 +155,18 @@ void HistoryStore::endFrame() {
         e.requested = e.written = e.resetAfterRequest = false;
     }
     ++frame_;
+}
+
+void HistoryStore::trim(uint32_t unusedFrames) {
+    for (auto it = entries_.begin(); it != entries_.end();) {
+        Entry& e = it->second;
+        if (e.requested || e.lastRequestedFrame + unusedFrames >= frame_) {
+            ++it;
+            continue;
+        }
+        release(e);
+        it = entries_.erase(it);
+    }
 }
 
 // ---- resets --------------------------------------------------------------------------------------

@@ -64,6 +64,11 @@ public:
     void reset(const std::string& name, const std::string& reason);
     void resetAll(const std::string& reason);
 
+    // Frees the entries no frame has requested for more than `unusedFrames` frames (a mode switched
+    // off: TAA's history must not stay at the size it last had). A later request creates the entry
+    // anew, with no valid `previous`. Between frames only, with the device done with them.
+    void trim(uint32_t unusedFrames);
+
     uint64_t frame() const { return frame_; }  // number of endFrame() calls so far
     size_t size() const { return entries_.size(); }
     bool contains(const std::string& name) const { return entries_.count(name) != 0; }
@@ -92,6 +97,7 @@ private:
         bool requested = false;      // this frame
         bool written = false;        // this frame, by a kept pass
         bool resetAfterRequest = false;  // this frame's `current` was built on history reset since
+        uint64_t lastRequestedFrame = 0;  // frame() when last requested
         HistoryStatus status;
     };
     template <class External>

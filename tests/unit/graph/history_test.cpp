@@ -396,3 +396,37 @@ TEST(GraphHistory, StoreFreesEverythingThroughTheDeallocator) {
     EXPECT_EQ(gpu.freedImages.size(), 2u);
     EXPECT_EQ(gpu.freedBuffers.size(), 2u);
 }
+
+TEST(GraphHistory, TrimFreesOnlyEntriesUnusedLongEnough) {
+    FakeGpu gpu;
+    HistoryStore store(gpu.allocator());
+    auto frame = [&](bool taa, bool moments) {
+        RenderGraph g;
+        if (taa) taaFrame(g, store);
+        if (moments) g.history(store, "denoise.moments", BufferDesc{256});
+        g.compile();
+        finishFrame(g, store);
+    };
+    frame(true, true);
+    frame(true, true);
+    frame(true, false);  // the moments' last request was two frames ago
+    store.trim(2);       // not more than 2: kept
+    EXPECT_TRUE(store.contains("denoise.moments"));
+    frame(true, false);
+    store.trim(2);  // 3 frames unused: freed through the deallocator; the used entry stays
+    EXPECT_FALSE(store.contains("denoise.moments"));
+    EXPECT_TRUE(gpu.liveBuffers.empty());
+    EXPECT_EQ(gpu.freedBuffers.size(), 2u);
+    EXPECT_TRUE(store.contains("taa.color"));
+    EXPECT_EQ(gpu.liveImages.size(), 2u);
+
+    // Switched off (TAA off), trimmed, switched on again: a fresh pair with no valid history.
+    frame(false, false);
+    frame(false, false);
+    store.trim(1);
+    EXPECT_FALSE(store.contains("taa.color"));
+    EXPECT_TRUE(gpu.liveImages.empty());
+    RenderGraph g;
+    EXPECT_FALSE(taaFrame(g, store).previousValid);
+    EXPECT_EQ(gpu.liveImages.size(), 2u);
+}
