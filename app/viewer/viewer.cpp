@@ -8,6 +8,7 @@
 //   PPR_VIEWER_SOAK=1           drive itself: techniques, settings, window sizes; a memory sample at
 //                               the end of each return to the initial state (viewer_soak.hpp)
 //   PPR_MEMORY_LOG=N            print a memory sample every N frames (render/memory_log.hpp)
+//   PPR_MEMORY_TEST_LEAK=N      leak N bytes a frame on purpose (the soak's own test)
 #include "viewer/viewer.hpp"
 
 #include "editor/editor_ui.hpp"
