@@ -2,7 +2,7 @@
 # Builds the libFuzzer targets (preset `fuzz`: clang-14 + ASan + UBSan, in build/fuzz), replays their
 # seeds and saved regressions, then fuzzes each target for SECONDS on a scratch copy of its seed
 # corpus and prints, per target, executions, coverage (libFuzzer's cov/ft), corpus size and any crash.
-#   scripts/fuzz.sh [SECONDS] [TARGET...]     SECONDS default 60; TARGETs: reflectors gltf cli (default all)
+#   scripts/fuzz.sh [SECONDS] [TARGET...]     SECONDS default 60; TARGETs: reflectors gltf cli camera_path (default all)
 # Exits 1 when a target crashes (a sanitizer report, a broken invariant, an uncaught exception, a
 # timeout or running out of memory); the input that did it is kept under build/fuzz/artifacts/.
 # Seeds and dictionaries: tests/data/fuzz/. New corpus entries go to a temporary directory, removed
@@ -13,7 +13,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 seconds="${1:-60}"
 [ $# -gt 0 ] && shift
 targets=("$@")
-[ ${#targets[@]} -eq 0 ] && targets=(reflectors gltf cli)
+[ ${#targets[@]} -eq 0 ] && targets=(reflectors gltf cli camera_path)
 data="$root/tests/data/fuzz"
 build="$root/build/fuzz"
 

@@ -55,8 +55,10 @@ std::optional<CameraPose> parseCameraSpec(const std::string& text) {
         detail::fail("--camera: expected 5 or 6 comma-separated numbers x,y,z,yawDeg,pitchDeg[,fovYDeg], got " +
                      std::to_string(v.size()) + got);
     static const char* kNames[] = {"x", "y", "z", "yawDeg", "pitchDeg", "fovYDeg"};
+    // Judged as stored (floats): 1e30 is a float a little over 1e30, which written back would fail.
     for (size_t i = 0; i < v.size(); ++i)
-        if (!std::isfinite(v[i]) || std::abs(v[i]) > 1e30) detail::fail(std::string("--camera: ") + kNames[i] + ": not a finite number" + got);
+        if (!std::isfinite(v[i]) || !(std::abs(static_cast<float>(v[i])) <= 1e30f))
+            detail::fail(std::string("--camera: ") + kNames[i] + ": not a finite number" + got);
     CameraPose pose;
     pose.position = glm::vec3(v[0], v[1], v[2]);
     pose.yawDeg = static_cast<float>(v[3]);
@@ -64,9 +66,10 @@ std::optional<CameraPose> parseCameraSpec(const std::string& text) {
     if (v[4] < -90.0 || v[4] > 90.0)
         detail::fail("--camera: pitchDeg: " + detail::fmtNum(v[4]) + " out of range [-90, 90]" + got);
     if (v.size() == 6) {
-        if (!(v[5] > 1.0 && v[5] < 179.0))
-            detail::fail("--camera: fovYDeg: " + detail::fmtNum(v[5]) + " out of range (1, 179)" + got);
+        // Judged as stored: 1.00000000001 is a float of exactly 1, outside the open range.
         pose.fovYDeg = static_cast<float>(v[5]);
+        if (!(pose.fovYDeg > 1.0f && pose.fovYDeg < 179.0f))
+            detail::fail("--camera: fovYDeg: " + detail::fmtNum(v[5]) + " out of range (1, 179)" + got);
     }
     return pose;
 }

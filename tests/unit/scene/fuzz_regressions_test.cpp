@@ -1,6 +1,7 @@
 // Inputs the fuzz targets (tests/fuzz/) found, saved in tests/data/fuzz/regressions/<target>/: each
 // loads or is refused with one std::runtime_error line naming the file, and the specific faults
 // stay fixed.
+#include "scene/camera_path.hpp"
 #include "scene/reflector.hpp"
 #include "scene/scene.hpp"
 
@@ -9,6 +10,8 @@
 #include <sys/resource.h>
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 using namespace ppr::scene;
 namespace fs = std::filesystem;
@@ -79,4 +82,27 @@ TEST(FuzzRegressions, WorldSpaceOverflowIsRefused) {
     }
     const std::string far = (kRegressions / "gltf" / "world_bounds_overflow.gltf").string();
     test::expectError([&] { loadGltf(far); }, {"node 'Doubled': mesh 'Far'"});
+}
+
+TEST(FuzzRegressions, SavedCameraPathInputsParseOrFailCleanly) {
+    for (const fs::path& p : savedInputs("camera_path")) {
+        SCOPED_TRACE(p.string());
+        std::ifstream in(p, std::ios::binary);
+        std::stringstream text;
+        text << in.rdbuf();
+        loadsOrFailsWithOneLine(p, [&](const std::string& f) { parseCameraPath(text.str(), f); });
+    }
+}
+
+// fuzz_camera_path: limits are judged on the floats a pose stores, so what is accepted written back
+// at full precision is accepted again, and nothing outside the open field-of-view range gets in.
+TEST(FuzzRegressions, CameraPathLimitsHoldForTheStoredFloats) {
+    EXPECT_THROW(parseCameraPath("0,0,0,0,0,1.00000000001\n", "p.txt"), std::runtime_error);   // a float of exactly 1
+    EXPECT_THROW(parseCameraPath("0,0,0,0,0,178.999999999\n", "p.txt"), std::runtime_error);   // a float of exactly 179
+    const std::vector<CameraPose> poses = parseCameraPath("0,01e30,0,0,0\n", "p.txt");        // y: the float nearest 1e30
+    char line[128];
+    std::snprintf(line, sizeof line, "0,%.17g,0,0,0\n", double(poses[0].position.y));
+    const std::vector<CameraPose> again = parseCameraPath(line, "p.txt");
+    EXPECT_EQ(again[0].position.y, poses[0].position.y);
+    EXPECT_THROW(parseCameraPath("0,1.0001e30,0,0,0\n", "p.txt"), std::runtime_error);
 }
