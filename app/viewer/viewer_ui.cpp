@@ -1,6 +1,5 @@
 #include "viewer/viewer_ui.hpp"
 
-#include "render/headless.hpp"  // median()
 #include "settings/debug_views.hpp"
 
 #include <GLFW/glfw3.h>
@@ -15,40 +14,6 @@
 #include <stdexcept>
 
 namespace ppr::app {
-
-// ---------------------------------------------------------------------------------------------------
-// Timing history
-
-void TimingHistory::add(const std::vector<graph::PassTiming>& frame) {
-    if (frame.empty()) return;
-    auto push = [](std::deque<float>& d, float v) {
-        d.push_back(v);
-        while (d.size() > kFrames) d.pop_front();
-    };
-    order_.clear();
-    double total = 0.0;
-    for (const graph::PassTiming& t : frame) {
-        order_.push_back(t.name);
-        push(passes_[t.name], static_cast<float>(t.gpuMs));
-        total += t.gpuMs;
-    }
-    push(totals_, static_cast<float>(total));
-}
-
-std::vector<TimingHistory::Row> TimingHistory::rows() const {
-    std::vector<Row> rows;
-    for (const std::string& name : order_) {
-        const std::deque<float>& d = passes_.at(name);
-        Row r;
-        r.name = name;
-        r.history.assign(d.begin(), d.end());
-        r.medianMs = median(std::vector<double>(d.begin(), d.end()));
-        rows.push_back(std::move(r));
-    }
-    return rows;
-}
-
-double TimingHistory::totalMedianMs() const { return median(std::vector<double>(totals_.begin(), totals_.end())); }
 
 // ---------------------------------------------------------------------------------------------------
 // ImGui layer

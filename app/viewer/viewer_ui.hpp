@@ -1,16 +1,15 @@
 #pragma once
 // The viewer's ImGui side: the ImGui context with its GLFW + Vulkan (1.86, render-pass based)
-// backends drawn through passes::UiPass, the rolling per-pass GPU timing history, and the "ppr"
-// panel (device, frame times, cameras, vsync, every --set setting, GPU timing table, capture).
+// backends drawn through passes::UiPass, and the "ppr" panel
+// (device, frame times, cameras, vsync, every --set setting, GPU timing table, capture).
 #include "ppr_common/tiles.h"
 #include "render/renderer.hpp"
 #include "render/taps.hpp"
 #include "cli/scene_source.hpp"
 #include "techniques/technique_table.hpp"
 #include "ui/ui_pass.hpp"
+#include "viewer/timing_history.hpp"
 
-#include <deque>
-#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,26 +17,6 @@
 struct GLFWwindow;
 
 namespace ppr::app {
-
-// Per-pass GPU times of the last kFrames frames, in the last frame's execution order.
-class TimingHistory {
-public:
-    static constexpr size_t kFrames = 60;
-    struct Row {
-        std::string name;
-        double medianMs = 0.0;
-        std::vector<float> history;  // oldest first
-    };
-    void add(const std::vector<graph::PassTiming>& frame);
-    std::vector<Row> rows() const;
-    double totalMedianMs() const;
-    std::vector<float> totals() const { return {totals_.begin(), totals_.end()}; }
-
-private:
-    std::vector<std::string> order_;
-    std::map<std::string, std::deque<float>> passes_;
-    std::deque<float> totals_;
-};
 
 // ImGui context and backends. The Vulkan backend is initialised against UiPass's render pass for the
 // swapchain format (re-initialised if a recreated swapchain changes format).
