@@ -4,10 +4,12 @@
 // depth it is affine along a ray's screen-space segment, and the nearest surface in a cell is the
 // minimum, so every level is a min-reduction of the one below (Uludag 2014).
 //
-// Levels live side by side in one r32f atlas image: level 0 at the origin, levels 1.. stacked in a
-// column to its right. The screen is padded up to a multiple of the coarsest cell so every level is
-// exactly half the one below: level L's texel c covers level-0 texels [c·2^L, (c+1)·2^L), with no
-// partial cells at the edges. Padding texels hold 1 (nothing there).
+// Level 0 is the depth buffer itself, read as 1 − depth where the march needs it (a copy cost a
+// full-screen store per frame, docs/performance.md). Levels 1.. live in one r32f atlas image, stacked
+// in a column from its top-left corner. The screen is padded up to a multiple of the coarsest cell so
+// every level is exactly half the one below: level L's texel c covers level-0 texels
+// [c·2^L, (c+1)·2^L), with no partial cells at the edges. Level-0 texels beyond the screen (padding)
+// hold 1 (nothing there).
 #ifndef PPR_HIZ_H
 #define PPR_HIZ_H
 #include "shader/shared.h"
@@ -18,10 +20,10 @@ PPR_CONST(uint, kHizGroupSize, 16u)
 
 PPR_BEGIN
 struct HizBuildPush {
-    ivec2 srcOrigin;  // the level below in the atlas (level ≥ 1)
+    ivec2 srcOrigin;  // the level below in the atlas (level ≥ 2)
     ivec2 dstOrigin;  // the level written
     uvec2 dstSize;    // its size in texels
-    uint level;       // 0: from the depth buffer
+    uint level;       // 1: from the depth buffer
     uint pad;
 };
 PPR_END
@@ -34,14 +36,14 @@ PPR_INLINE uvec2 hizPaddedSize(uvec2 screen) {
     return ((screen + uvec2(cell - 1u)) / cell) * cell;
 }
 PPR_INLINE uvec2 hizLevelSize(uvec2 padded, uint level) { return uvec2(padded.x >> level, padded.y >> level); }
-// Top-left texel of a level in the atlas.
+// Top-left texel of a level (≥ 1) in the atlas.
 PPR_INLINE ivec2 hizLevelOrigin(uvec2 padded, uint level) {
-    if (level == 0u) return ivec2(0, 0);
     int y = 0;
     for (uint l = 1u; l < level; ++l) y += int(padded.y >> l);
-    return ivec2(int(padded.x), y);
+    return ivec2(0, y);
 }
-PPR_INLINE uvec2 hizAtlasSize(uvec2 padded) { return uvec2(padded.x + padded.x / 2u, padded.y); }
+// Levels 1.. stacked: half the padded width, and heights that sum to less than the padded height.
+PPR_INLINE uvec2 hizAtlasSize(uvec2 padded) { return uvec2(padded.x / 2u, padded.y); }
 // Level-0 value of a depth-buffer sample (reverse-Z, 0 = sky).
 PPR_INLINE float hizFromReverseZ(float reverseZ) { return 1.0f - reverseZ; }
 PPR_END

@@ -3,21 +3,33 @@
 #include "common/bindings.glsl"
 #include "hiz/hiz.h"
 
-// One level of the depth hierarchy (hiz.h): level 0 from the depth buffer (padding = empty), every
-// other level the minimum of the 2×2 texels below it.
+// One level (≥ 1) of the depth hierarchy (hiz.h): level 1 the minimum of each 2×2 quad of the depth
+// buffer (as 1 − depth; beyond the screen, empty), every other level the minimum of the 2×2 texels
+// below it. Level 0 is the depth buffer itself and is not built.
 layout(local_size_x = kHizGroupSize, local_size_y = kHizGroupSize) in;
 layout(set = 0, binding = 1) uniform sampler2D depthTex;
 layout(set = 0, binding = 2, r32f) uniform image2D atlas;
 layout(push_constant, scalar) uniform Push { HizBuildPush pc; };
 
+float level0(ivec2 p) {
+    return all(lessThan(p, ivec2(frame.screenSize))) ? hizFromReverseZ(texelFetch(depthTex, p, 0).r) : kHizEmpty;
+}
+
 void main() {
     ivec2 c = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(uvec2(c), pc.dstSize))) return;
+    ivec2 p = 2 * c;
     float v;
-    if (pc.level == 0u) {
-        v = all(lessThan(c, ivec2(frame.screenSize))) ? hizFromReverseZ(texelFetch(depthTex, c, 0).r) : kHizEmpty;
+    if (pc.level == 1u) {
+        if (all(lessThan(p + 1, ivec2(frame.screenSize)))) {
+            // The whole quad on screen: one gather (the sample point is the quad's shared corner).
+            vec4 d = textureGather(depthTex, vec2(p + 1) * frame.invScreenSize, 0);
+            v = min(min(hizFromReverseZ(d.x), hizFromReverseZ(d.y)), min(hizFromReverseZ(d.z), hizFromReverseZ(d.w)));
+        } else {
+            v = min(min(level0(p), level0(p + ivec2(1, 0))), min(level0(p + ivec2(0, 1)), level0(p + ivec2(1, 1))));
+        }
     } else {
-        ivec2 s = pc.srcOrigin + 2 * c;
+        ivec2 s = pc.srcOrigin + p;
         v = min(min(imageLoad(atlas, s).r, imageLoad(atlas, s + ivec2(1, 0)).r),
                 min(imageLoad(atlas, s + ivec2(0, 1)).r, imageLoad(atlas, s + ivec2(1, 1)).r));
     }

@@ -16,16 +16,16 @@ HizAtlas HizPass::add(graph::RenderGraph& g, const FrameInputs& in, graph::Image
     const glm::uvec2 padded = gpu::hizPaddedSize({in.extent.width, in.extent.height});
     const glm::uvec2 size = gpu::hizAtlasSize(padded);
     HizAtlas atlas{g.createImage("hiz.atlas", {size.x, size.y, kFormat, 1}), gpu::kHizLevels};
-    for (uint32_t level = 0; level < gpu::kHizLevels; ++level) {
+    for (uint32_t level = 1; level < gpu::kHizLevels; ++level) {
         gpu::HizBuildPush push{};
         push.level = level;
         push.dstOrigin = gpu::hizLevelOrigin(padded, level);
         push.dstSize = gpu::hizLevelSize(padded, level);
-        if (level > 0) push.srcOrigin = gpu::hizLevelOrigin(padded, level - 1);
+        if (level > 1) push.srcOrigin = gpu::hizLevelOrigin(padded, level - 1);
         ComputePass pass(g, ctx_, "hiz.build." + std::to_string(level), pipeline_);
         pass.uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize).sampled(depth, in.samplers->nearestClamp);
-        // Level 0 starts the image; later levels read the one below and keep the rest.
-        if (level == 0) pass.storageWrite(atlas.image, &atlas.image);
+        // Level 1 (from the depth buffer) starts the image; later levels read the one below and keep the rest.
+        if (level == 1) pass.storageWrite(atlas.image, &atlas.image);
         else pass.storageReadWrite(atlas.image, &atlas.image);
         pass.push(push).dispatch({push.dstSize.x, push.dstSize.y}, gpu::kHizGroupSize);
     }

@@ -1,6 +1,6 @@
 #pragma once
-// Builds the depth hierarchy (hiz.h) from the G-buffer depth: one pass per level, "hiz.build.<L>",
-// so the build is timed on its own.
+// Builds the depth hierarchy (hiz.h) from the G-buffer depth: one pass per level from 1 up,
+// "hiz.build.<L>", so the build is timed on its own (level 0 is the depth buffer itself).
 #include "common/frame_inputs.hpp"
 #include "graph/graph.hpp"
 

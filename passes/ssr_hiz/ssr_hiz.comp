@@ -15,6 +15,14 @@
 // pixel coordinates, so both the cell exits and the point where the ray reaches a depth are one
 // division each.
 
+// The hierarchy's value of a cell: level 0 is the depth buffer itself (padding beyond the screen
+// empty), levels 1.. are in the atlas.
+float hizCellMin(int level, ivec2 origin, ivec2 cell) {
+    if (level == 0)
+        return all(lessThan(cell, ivec2(frame.screenSize))) ? hizFromReverseZ(texelFetch(depthTex, cell, 0).r) : kHizEmpty;
+    return imageLoad(hizAtlas, origin + cell).r;
+}
+
 bool ssrTrace(SsrRay ray, out vec2 hitPixel) {
     hitPixel = vec2(0.0);
     SsrSegment seg = ssrSegment(ray);
@@ -29,7 +37,7 @@ bool ssrTrace(SsrRay ray, out vec2 hitPixel) {
     float slack = ssrSlack(seg);
     int level = 0;
     float cellSize = 1.0;
-    ivec2 origin = hizLevelOrigin(padded, 0u);
+    ivec2 origin = ivec2(0);
     ivec2 levelSize = ivec2(hizLevelSize(padded, 0u));
     // The pixel the ray starts in holds its own surface: leave it before testing anything.
     float t = ssrCellExit(seg, ssrCellAt(seg, 0.0, 1.0), 1.0);
@@ -37,7 +45,7 @@ bool ssrTrace(SsrRay ray, out vec2 hitPixel) {
     for (uint i = 0u; i < pc.maxSteps && t < 1.0; ++i) {
         vec2 cellF = ssrCellAt(seg, t, cellSize);
         ivec2 cell = clamp(ivec2(cellF), ivec2(0), levelSize - 1);  // the lookup nudge can reach past the edge
-        float cellMin = imageLoad(hizAtlas, origin + cell).r;
+        float cellMin = hizCellMin(level, origin, cell);
         float tExit = ssrCellExit(seg, cellF, cellSize);
         int nextLevel;
         if (d0 + t * dd < cellMin) {

@@ -1,5 +1,5 @@
 // ssr-hiz on the GPU: the depth hierarchy the frame builds is exactly the min-reduction of its depth
-// buffer (hiz/hiz.h layout, odd sizes included), and the hierarchical march finds the reflections
+// buffer (hiz/hiz.h layout: levels 1.. in the atlas, odd sizes included), and the hierarchical march finds the reflections
 // ssr-brute finds, with the same colours. Validation + synchronization validation on throughout.
 #include "common/reflection.h"
 #include "gpu_test_util.hpp"
@@ -27,7 +27,7 @@ void expectAtlasIsMinOfDepth(const app::DepthCapture& c, const std::string& what
     for (uint32_t y = 0; y < padded.y; ++y)
         for (uint32_t x = 0; x < padded.x; ++x)
             level[size_t(y) * padded.x + x] = x < screen.x && y < screen.y ? gpu::hizFromReverseZ(c.depth[size_t(y) * screen.x + x]) : gpu::kHizEmpty;
-    size_t sky = 0, mismatches = 0, padding = 0;
+    size_t sky = 0, mismatches = 0, edgeQuads = 0;
     for (float d : c.depth) sky += d == 0.0f;
     for (uint32_t l = 0; l < gpu::kHizLevels; ++l) {
         const glm::uvec2 size = gpu::hizLevelSize(padded, l);
@@ -41,6 +41,7 @@ void expectAtlasIsMinOfDepth(const app::DepthCapture& c, const std::string& what
                 }
             level = std::move(next);
         }
+        if (l == 0) continue;  // level 0 is the depth buffer itself, not in the atlas
         const glm::ivec2 origin = gpu::hizLevelOrigin(padded, l);
         for (uint32_t y = 0; y < size.y; ++y)
             for (uint32_t x = 0; x < size.x; ++x) {
@@ -48,10 +49,8 @@ void expectAtlasIsMinOfDepth(const app::DepthCapture& c, const std::string& what
                 const float got = c.hizAtlas[size_t(origin.y + y) * atlas.x + origin.x + x];
                 if (got != expected && ++mismatches <= 5)
                     ADD_FAILURE() << what << ": level " << l << " texel " << x << "," << y << " is " << got << ", expected " << expected;
-                if (l == 0 && (x >= screen.x || y >= screen.y)) {
-                    EXPECT_EQ(got, gpu::kHizEmpty) << what << ": padding texel " << x << "," << y;
-                    ++padding;
-                }
+                // Level 1 quads that reach past the screen take the build's per-texel path.
+                if (l == 1 && (2 * x + 1 >= screen.x || 2 * y + 1 >= screen.y)) ++edgeQuads;
             }
     }
     EXPECT_EQ(mismatches, 0u) << what;
@@ -59,7 +58,7 @@ void expectAtlasIsMinOfDepth(const app::DepthCapture& c, const std::string& what
     EXPECT_GT(sky, 0u) << what;
     EXPECT_LT(sky, c.depth.size()) << what;
     if (screen.x % 64 || screen.y % 64) {
-        EXPECT_GT(padding, 0u) << what;
+        EXPECT_GT(edgeQuads, 0u) << what;
     }
 }
 

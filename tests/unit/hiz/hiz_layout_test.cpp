@@ -1,6 +1,6 @@
 // The depth hierarchy's layout (passes/hiz/hiz.h, the header hiz_build.comp and ssr_hiz.comp
-// compile): padding, where the levels sit in the atlas, and that a build following it makes every
-// texel the nearest depth of the pixels it covers.
+// compile): padding, where levels 1.. sit in the atlas (level 0 is the depth buffer), and that a
+// build following it makes every texel the nearest depth of the pixels it covers.
 #include "hiz/hiz.h"
 
 #include <gtest/gtest.h>
@@ -37,21 +37,27 @@ bool overlap(const Rect& a, const Rect& b) {
            b.origin.y < a.origin.y + int(a.size.y);
 }
 
-// The atlas as the GPU build makes it, level by level: level 0 from the depth (padding empty), every
-// other level the minimum of the 2×2 texels below. Texels outside every level stay NaN.
+// Level 0, the depth buffer as the march reads it: 1 − depth on screen, empty beyond.
+float level0(const std::vector<float>& depth, glm::uvec2 screen, uint32_t x, uint32_t y) {
+    return x < screen.x && y < screen.y ? hizFromReverseZ(depth[size_t(y) * screen.x + x]) : kHizEmpty;
+}
+
+// The atlas as the GPU build makes it, level by level: level 1 the minimum of each 2×2 quad of level
+// 0, every other level the minimum of the 2×2 texels below. Texels outside every level stay NaN.
 std::vector<float> buildAtlas(const std::vector<float>& depth, glm::uvec2 screen) {
     const glm::uvec2 padded = hizPaddedSize(screen);
     const glm::uvec2 atlasSize = hizAtlasSize(padded);
     std::vector<float> atlas(size_t(atlasSize.x) * atlasSize.y, std::nanf(""));
     auto at = [&](glm::ivec2 p) -> float& { return atlas[size_t(p.y) * atlasSize.x + p.x]; };
-    for (uint32_t level = 0; level < kHizLevels; ++level) {
+    for (uint32_t level = 1; level < kHizLevels; ++level) {
         const glm::ivec2 dst = hizLevelOrigin(padded, level);
         const glm::uvec2 size = hizLevelSize(padded, level);
         for (uint32_t y = 0; y < size.y; ++y)
             for (uint32_t x = 0; x < size.x; ++x) {
                 float v;
-                if (level == 0) {
-                    v = x < screen.x && y < screen.y ? hizFromReverseZ(depth[size_t(y) * screen.x + x]) : kHizEmpty;
+                if (level == 1) {
+                    v = std::min(std::min(level0(depth, screen, 2 * x, 2 * y), level0(depth, screen, 2 * x + 1, 2 * y)),
+                                 std::min(level0(depth, screen, 2 * x, 2 * y + 1), level0(depth, screen, 2 * x + 1, 2 * y + 1)));
                 } else {
                     const glm::ivec2 s = hizLevelOrigin(padded, level - 1) + 2 * glm::ivec2(x, y);
                     v = std::min(std::min(at(s), at(s + glm::ivec2(1, 0))), std::min(at(s + glm::ivec2(0, 1)), at(s + glm::ivec2(1, 1))));
@@ -80,6 +86,10 @@ std::vector<float> randomDepth(glm::uvec2 screen, uint32_t seed) {
 
 TEST(HizLayout, SkyAndPaddingAreEmpty) {
     EXPECT_EQ(hizFromReverseZ(0.0f), kHizEmpty);
+    const std::vector<float> depth(size_t(5) * 3, 0.5f);
+    EXPECT_EQ(level0(depth, {5, 3}, 4, 2), hizFromReverseZ(0.5f));
+    EXPECT_EQ(level0(depth, {5, 3}, 5, 2), kHizEmpty);  // padding
+    EXPECT_EQ(level0(depth, {5, 3}, 4, 3), kHizEmpty);
     EXPECT_EQ(hizFromReverseZ(1.0f), 0.0f);  // at the near plane
     EXPECT_LT(hizFromReverseZ(0.5f), hizFromReverseZ(0.25f));  // nearer is smaller: the min is the nearest
 }
@@ -112,14 +122,14 @@ TEST(HizLayout, LevelsFitInTheAtlasWithoutOverlapping) {
         const glm::uvec2 padded = hizPaddedSize(screen);
         const glm::uvec2 atlas = hizAtlasSize(padded);
         std::vector<Rect> rects;
-        for (uint32_t level = 0; level < kHizLevels; ++level) {
+        for (uint32_t level = 1; level < kHizLevels; ++level) {
             const Rect r{hizLevelOrigin(padded, level), hizLevelSize(padded, level)};
             EXPECT_GE(r.origin.x, 0);
             EXPECT_GE(r.origin.y, 0);
             EXPECT_LE(r.origin.x + int(r.size.x), int(atlas.x)) << screen.x << "x" << screen.y << " level " << level;
             EXPECT_LE(r.origin.y + int(r.size.y), int(atlas.y)) << screen.x << "x" << screen.y << " level " << level;
             for (size_t other = 0; other < rects.size(); ++other)
-                EXPECT_FALSE(overlap(r, rects[other])) << screen.x << "x" << screen.y << ": levels " << other << " and " << level;
+                EXPECT_FALSE(overlap(r, rects[other])) << screen.x << "x" << screen.y << ": levels " << other + 1 << " and " << level;
             rects.push_back(r);
         }
     }
@@ -135,11 +145,8 @@ TEST(HizLayout, BuiltChainHoldsTheNearestDepthOfEveryCell) {
             const glm::uvec2 padded = hizPaddedSize(screen);
             const glm::uvec2 atlasSize = hizAtlasSize(padded);
             // Brute force: the min over every level-0 texel the cell covers, straight from the depth.
-            auto level0 = [&](uint32_t x, uint32_t y) {
-                return x < screen.x && y < screen.y ? hizFromReverseZ(depth[size_t(y) * screen.x + x]) : kHizEmpty;
-            };
             uint64_t checked = 0;
-            for (uint32_t level = 0; level < kHizLevels; ++level) {
+            for (uint32_t level = 1; level < kHizLevels; ++level) {
                 const glm::ivec2 origin = hizLevelOrigin(padded, level);
                 const glm::uvec2 size = hizLevelSize(padded, level);
                 const uint32_t cell = 1u << level;
@@ -147,7 +154,7 @@ TEST(HizLayout, BuiltChainHoldsTheNearestDepthOfEveryCell) {
                     for (uint32_t cx = 0; cx < size.x; ++cx) {
                         float expected = INFINITY;
                         for (uint32_t y = cy * cell; y < (cy + 1) * cell; ++y)
-                            for (uint32_t x = cx * cell; x < (cx + 1) * cell; ++x) expected = std::min(expected, level0(x, y));
+                            for (uint32_t x = cx * cell; x < (cx + 1) * cell; ++x) expected = std::min(expected, level0(depth, screen, x, y));
                         const float got = atlas[size_t(origin.y + cy) * atlasSize.x + origin.x + cx];
                         ASSERT_EQ(got, expected) << screen.x << "x" << screen.y << " seed " << seed << " level " << level << " cell " << cx << ","
                                                  << cy;
@@ -156,7 +163,7 @@ TEST(HizLayout, BuiltChainHoldsTheNearestDepthOfEveryCell) {
             }
             // Every texel of every level was written and checked.
             uint64_t texels = 0;
-            for (uint32_t level = 0; level < kHizLevels; ++level) texels += uint64_t(hizLevelSize(padded, level).x) * hizLevelSize(padded, level).y;
+            for (uint32_t level = 1; level < kHizLevels; ++level) texels += uint64_t(hizLevelSize(padded, level).x) * hizLevelSize(padded, level).y;
             EXPECT_EQ(checked, texels);
         }
     }
@@ -171,7 +178,7 @@ TEST(HizLayout, CellsOnTheScreenEdgeSeeOnlyTheScreen) {
     const std::vector<float> atlas = buildAtlas(depth, screen);
     const glm::uvec2 padded = hizPaddedSize(screen);
     const glm::uvec2 atlasSize = hizAtlasSize(padded);
-    for (uint32_t level = 0; level < kHizLevels; ++level) {
+    for (uint32_t level = 1; level < kHizLevels; ++level) {
         const glm::ivec2 origin = hizLevelOrigin(padded, level);
         const glm::uvec2 size = hizLevelSize(padded, level);
         const glm::uvec2 nearCell(36u >> level, 22u >> level);
