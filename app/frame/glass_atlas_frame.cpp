@@ -13,6 +13,12 @@ uint32_t GlassStats::usedHeight() const {
     return rows;
 }
 
+uint32_t GlassStats::usedWidth() const {
+    uint32_t columns = 0;
+    for (const scene::GlassRegion& r : layout) columns = std::max(columns, static_cast<uint32_t>(r.atlasOrigin.x + r.atlasSize.x));
+    return columns;
+}
+
 std::string GlassStats::overflowMessage() const {
     if (!overflowed()) return {};
     char scaleText[32];
@@ -52,7 +58,7 @@ std::optional<GlassRegionsBound> GlassAtlasFrame::packAndUpload(graph::RenderGra
     pack(slot, settings, reflectors, viewProj, eye, extent);
     const std::optional<GlassStats>& s = stats_[slot];
     if (!s || s->regions() == 0) return std::nullopt;
-    return GlassRegionsBound{upload(g), s->regions(), s->atlasSize, s->usedHeight()};
+    return GlassRegionsBound{upload(g), s->regions(), s->atlasSize, s->usedWidth(), s->usedHeight()};
 }
 
 }  // namespace ppr::app

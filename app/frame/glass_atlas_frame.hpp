@@ -23,6 +23,7 @@ struct GlassStats {
     std::vector<scene::GlassRegion> layout;  // where each panel's region lies (screen and atlas)
     uint32_t regions() const { return static_cast<uint32_t>(layout.size()); }  // panels with a region
     uint32_t usedHeight() const;  // atlas rows holding regions (the rest is not dispatched)
+    uint32_t usedWidth() const;   // atlas columns holding regions (likewise)
     bool overflowed() const { return scaled > 0 || dropped > 0; }
     // One line saying how the atlas overflowed ("" when it did not).
     std::string overflowMessage() const;
@@ -31,7 +32,7 @@ struct GlassStats {
 // A packed frame's regions as the glass passes bind them, the table uploaded.
 struct GlassRegionsBound {
     passes::GlassRegionBuffers buffers;
-    uint32_t count = 0, atlasSize = 0, usedHeight = 0;
+    uint32_t count = 0, atlasSize = 0, usedWidth = 0, usedHeight = 0;
 };
 
 class GlassAtlasFrame {

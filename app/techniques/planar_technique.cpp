@@ -29,6 +29,7 @@ std::optional<graph::ImageHandle> PlanarTechnique::addReflection(TechniqueFrame&
     glass.regionList = bound->buffers.list;
     glass.regionCount = bound->count;
     glass.atlasSize = bound->atlasSize;
+    glass.usedWidth = bound->usedWidth;
     glass.usedHeight = bound->usedHeight;
     const scene::ReflectorGroups& groups = s.reflectors.buffer().groups();
     glassPlaneGroups_.assign(groups.planeGroupCount, false);

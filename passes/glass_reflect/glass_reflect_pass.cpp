@@ -28,7 +28,7 @@ graph::ImageHandle GlassReflectPass::addAtlasView(graph::RenderGraph& g, const F
 
 graph::ImageHandle GlassReflectPass::add(graph::RenderGraph& g, const FrameInputs& in, const GlassReflectInputs& inputs) const {
     const uint32_t size = inputs.atlasSize;
-    // Rows below the packed regions are never read: cleared (cheap, transfer), not dispatched.
+    // Texels right of and below the packed regions hold no reflection: cleared (cheap, transfer), not dispatched.
     graph::ImageHandle target = addClearPass(g, in, "ppr.glass.reflection.clear",
                                              g.createImage("ppr.glass.reflection", {size, size, kFormat, 1}), VkClearColorValue{});
     if (inputs.usedHeight == 0 || inputs.regionCount == 0) return target;
@@ -45,7 +45,7 @@ graph::ImageHandle GlassReflectPass::add(graph::RenderGraph& g, const FrameInput
         .storageRead(inputs.regionList)
         .storageReadWrite(target, &out)
         .push(push)
-        .dispatch({size, inputs.usedHeight}, gpu::kGlassReflectGroupSize);
+        .dispatch({inputs.usedWidth, inputs.usedHeight}, gpu::kGlassReflectGroupSize);
     return out;
 }
 

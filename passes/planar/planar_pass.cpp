@@ -74,7 +74,7 @@ PlanarOutputs PlanarPass::add(graph::RenderGraph& g, const FrameInputs& in, cons
             .storageRead(glass->regionList)
             .storageReadWrite(out.glass, &out.glass)
             .push(glassPush)
-            .dispatch({glass->atlasSize, glass->usedHeight}, gpu::kPlanarGroupSize);
+            .dispatch({glass->usedWidth, glass->usedHeight}, gpu::kPlanarGroupSize);
     }
     return out;
 }

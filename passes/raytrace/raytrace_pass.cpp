@@ -94,7 +94,7 @@ graph::ImageHandle RaytracePass::addGlass(graph::RenderGraph& g, const FrameInpu
     gpu::RaytracePush push{};
     push.looseCount = in.looseCount;
     push.regionCount = glass.regionCount;
-    const VkExtent2D dispatch{size, glass.usedHeight};  // only the atlas rows holding regions
+    const VkExtent2D dispatch{glass.usedWidth, glass.usedHeight};  // only the atlas rows and columns holding regions
     const Data& d = g.addPass<Data>(
         "raytraced.glass", graph::QueueKind::Compute,
         [&](graph::PassBuilder& b, Data& data) {
