@@ -7,16 +7,13 @@
 
 namespace ppr::app {
 
-uint32_t GlassStats::usedHeight() const {
-    uint32_t rows = 0;
-    for (const scene::GlassRegion& r : layout) rows = std::max(rows, static_cast<uint32_t>(r.atlasOrigin.y + r.atlasSize.y));
-    return rows;
-}
-
-uint32_t GlassStats::usedWidth() const {
-    uint32_t columns = 0;
-    for (const scene::GlassRegion& r : layout) columns = std::max(columns, static_cast<uint32_t>(r.atlasOrigin.x + r.atlasSize.x));
-    return columns;
+VkExtent2D GlassStats::usedExtent() const {
+    VkExtent2D used{};
+    for (const scene::GlassRegion& r : layout) {
+        used.width = std::max(used.width, static_cast<uint32_t>(r.atlasOrigin.x + r.atlasSize.x));
+        used.height = std::max(used.height, static_cast<uint32_t>(r.atlasOrigin.y + r.atlasSize.y));
+    }
+    return used;
 }
 
 std::string GlassStats::overflowMessage() const {
@@ -58,7 +55,7 @@ std::optional<GlassRegionsBound> GlassAtlasFrame::packAndUpload(graph::RenderGra
     pack(slot, settings, reflectors, viewProj, eye, extent);
     const std::optional<GlassStats>& s = stats_[slot];
     if (!s || s->regions() == 0) return std::nullopt;
-    return GlassRegionsBound{upload(g), s->regions(), s->atlasSize, s->usedWidth(), s->usedHeight()};
+    return GlassRegionsBound{upload(g), s->regions(), s->atlasSize, s->usedExtent()};
 }
 
 }  // namespace ppr::app

@@ -22,8 +22,9 @@ struct GlassStats {
     float scale = 1.0f;      // the common scale of the regions
     std::vector<scene::GlassRegion> layout;  // where each panel's region lies (screen and atlas)
     uint32_t regions() const { return static_cast<uint32_t>(layout.size()); }  // panels with a region
-    uint32_t usedHeight() const;  // atlas rows holding regions (the rest is not dispatched)
-    uint32_t usedWidth() const;   // atlas columns holding regions (likewise)
+    // The atlas columns and rows holding regions, from its top-left corner: what the glass passes
+    // dispatch over (the rest keeps the clear).
+    VkExtent2D usedExtent() const;
     bool overflowed() const { return scaled > 0 || dropped > 0; }
     // One line saying how the atlas overflowed ("" when it did not).
     std::string overflowMessage() const;
@@ -32,7 +33,8 @@ struct GlassStats {
 // A packed frame's regions as the glass passes bind them, the table uploaded.
 struct GlassRegionsBound {
     passes::GlassRegionBuffers buffers;
-    uint32_t count = 0, atlasSize = 0, usedWidth = 0, usedHeight = 0;
+    uint32_t count = 0, atlasSize = 0;
+    VkExtent2D used{};  // GlassStats::usedExtent
 };
 
 class GlassAtlasFrame {

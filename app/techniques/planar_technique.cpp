@@ -29,8 +29,7 @@ std::optional<graph::ImageHandle> PlanarTechnique::addReflection(TechniqueFrame&
     glass.regionList = bound->buffers.list;
     glass.regionCount = bound->count;
     glass.atlasSize = bound->atlasSize;
-    glass.usedWidth = bound->usedWidth;
-    glass.usedHeight = bound->usedHeight;
+    glass.used = bound->used;
     const scene::ReflectorGroups& groups = s.reflectors.buffer().groups();
     glassPlaneGroups_.assign(groups.planeGroupCount, false);
     for (const scene::GlassRegion& r : s.glass.stats(f.slot)->layout) glassPlaneGroups_[groups.planeGroup[r.reflectorIndex]] = true;

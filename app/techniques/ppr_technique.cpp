@@ -87,8 +87,7 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
         resolve.regionList = regions.list;
         resolve.regionCount = glass->regions();
         resolve.atlasSize = glass->atlasSize;
-        resolve.usedWidth = glass->usedWidth();
-        resolve.usedHeight = glass->usedHeight();
+        resolve.used = glass->usedExtent();
         resolve.flags = resolveFlags(s);
         f.board.put(passes::GlassReflection{f.services.glassReflect.add(f.graph, f.in, resolve), regions.table});
     }

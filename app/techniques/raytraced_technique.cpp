@@ -52,8 +52,7 @@ std::optional<graph::ImageHandle> RaytracedTechnique::addReflection(TechniqueFra
     glass.regionList = bound->buffers.list;
     glass.regionCount = bound->count;
     glass.atlasSize = bound->atlasSize;
-    glass.usedWidth = bound->usedWidth;
-    glass.usedHeight = bound->usedHeight;
+    glass.used = bound->used;
     f.board.put(passes::GlassReflection{pass_->addGlass(f.graph, f.in, rt, glass), bound->buffers.table});
     return reflection;
 }

@@ -31,7 +31,7 @@ graph::ImageHandle GlassReflectPass::add(graph::RenderGraph& g, const FrameInput
     // Texels right of and below the packed regions hold no reflection: cleared (cheap, transfer), not dispatched.
     graph::ImageHandle target = addClearPass(g, in, "ppr.glass.reflection.clear",
                                              g.createImage("ppr.glass.reflection", {size, size, kFormat, 1}), VkClearColorValue{});
-    if (inputs.usedHeight == 0 || inputs.regionCount == 0) return target;
+    if (inputs.used.height == 0 || inputs.regionCount == 0) return target;
     gpu::GlassReflectPush push{};
     push.regionCount = inputs.regionCount;
     push.flags = inputs.flags;
@@ -45,7 +45,7 @@ graph::ImageHandle GlassReflectPass::add(graph::RenderGraph& g, const FrameInput
         .storageRead(inputs.regionList)
         .storageReadWrite(target, &out)
         .push(push)
-        .dispatch({inputs.usedWidth, inputs.usedHeight}, gpu::kGlassReflectGroupSize);
+        .dispatch(inputs.used, gpu::kGlassReflectGroupSize);
     return out;
 }
 

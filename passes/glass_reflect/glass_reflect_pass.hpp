@@ -12,8 +12,7 @@ struct GlassReflectInputs {
     graph::BufferHandle regions, regionList;  // glass_regions.hpp
     uint32_t regionCount = 0;
     uint32_t atlasSize = 0;        // texels per side
-    uint32_t usedWidth = 0;        // atlas columns holding regions: the rest is not dispatched
-    uint32_t usedHeight = 0;       // atlas rows holding regions: likewise
+    VkExtent2D used{};             // the atlas texels holding regions, from its corner: the rest is not dispatched
     uint32_t flags = 0;            // ppr_reflect.h toggles (holes, filter, antibleed)
 };
 

@@ -2,6 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "common/bindings.glsl"
 #include "hiz/hiz.h"
+#include "hiz/hiz_level0.glsl"
 
 // One level (≥ 1) of the depth hierarchy (hiz.h): level 1 the minimum of each 2×2 quad of the depth
 // buffer (as 1 − depth; beyond the screen, empty), every other level the minimum of the 2×2 texels
@@ -10,10 +11,6 @@ layout(local_size_x = kHizGroupSize, local_size_y = kHizGroupSize) in;
 layout(set = 0, binding = 1) uniform sampler2D depthTex;
 layout(set = 0, binding = 2, r32f) uniform image2D atlas;
 layout(push_constant, scalar) uniform Push { HizBuildPush pc; };
-
-float level0(ivec2 p) {
-    return all(lessThan(p, ivec2(frame.screenSize))) ? hizFromReverseZ(texelFetch(depthTex, p, 0).r) : kHizEmpty;
-}
 
 void main() {
     ivec2 c = ivec2(gl_GlobalInvocationID.xy);
@@ -26,7 +23,8 @@ void main() {
             vec4 d = textureGather(depthTex, vec2(p + 1) * frame.invScreenSize, 0);
             v = min(min(hizFromReverseZ(d.x), hizFromReverseZ(d.y)), min(hizFromReverseZ(d.z), hizFromReverseZ(d.w)));
         } else {
-            v = min(min(level0(p), level0(p + ivec2(1, 0))), min(level0(p + ivec2(0, 1)), level0(p + ivec2(1, 1))));
+            v = min(min(hizLevel0(depthTex, p), hizLevel0(depthTex, p + ivec2(1, 0))),
+                    min(hizLevel0(depthTex, p + ivec2(0, 1)), hizLevel0(depthTex, p + ivec2(1, 1))));
         }
     } else {
         ivec2 s = pc.srcOrigin + p;

@@ -64,7 +64,7 @@ PlanarOutputs PlanarPass::add(graph::RenderGraph& g, const FrameInputs& in, cons
             .sampled(mirrored.material, in.samplers->nearestClamp)
             .push(push)
             .dispatch(in.extent, gpu::kPlanarGroupSize);
-        if (!glass || glass->usedHeight == 0 || !(*glass->planeGroups)[v.planeGroup]) continue;
+        if (!glass || glass->used.height == 0 || !(*glass->planeGroups)[v.planeGroup]) continue;
         gpu::PlanarGlassPush glassPush{};
         glassPush.planeGroup = v.planeGroup;
         glassPush.regionCount = glass->regionCount;
@@ -74,7 +74,7 @@ PlanarOutputs PlanarPass::add(graph::RenderGraph& g, const FrameInputs& in, cons
             .storageRead(glass->regionList)
             .storageReadWrite(out.glass, &out.glass)
             .push(glassPush)
-            .dispatch({glass->usedWidth, glass->usedHeight}, gpu::kPlanarGroupSize);
+            .dispatch(glass->used, gpu::kPlanarGroupSize);
     }
     return out;
 }

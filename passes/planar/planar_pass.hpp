@@ -20,7 +20,8 @@ struct PlanarView {
 // The glass atlas layout of this frame (glass_reflect/glass_regions.hpp), when glass panels are visible.
 struct PlanarGlass {
     graph::BufferHandle regions, regionList;
-    uint32_t regionCount = 0, atlasSize = 0, usedWidth = 0, usedHeight = 0;
+    uint32_t regionCount = 0, atlasSize = 0;
+    VkExtent2D used{};  // the atlas texels holding regions, from its corner: the rest is not dispatched
     const std::vector<bool>* planeGroups = nullptr;  // per plane group: does it hold a pane with a region?
 };
 

@@ -86,7 +86,7 @@ graph::ImageHandle RaytracePass::addScreen(graph::RenderGraph& g, const FrameInp
 graph::ImageHandle RaytracePass::addGlass(graph::RenderGraph& g, const FrameInputs& in, const RaytraceInputs& rt, const RaytraceGlass& glass) const {
     const uint32_t size = glass.atlasSize;
     graph::ImageHandle atlas = addClearPass(g, in, "raytraced.glass.clear", g.createImage("raytraced.glass", {size, size, kReflectionFormat, 1}), {});
-    if (glass.usedHeight == 0 || glass.regionCount == 0) return atlas;
+    if (glass.used.height == 0 || glass.regionCount == 0) return atlas;
     struct Data {
         graph::ImageHandle depth, shadowMap, out;
         graph::BufferHandle regions, regionList;
@@ -94,7 +94,6 @@ graph::ImageHandle RaytracePass::addGlass(graph::RenderGraph& g, const FrameInpu
     gpu::RaytracePush push{};
     push.looseCount = in.looseCount;
     push.regionCount = glass.regionCount;
-    const VkExtent2D dispatch{glass.usedWidth, glass.usedHeight};  // only the atlas rows and columns holding regions
     const Data& d = g.addPass<Data>(
         "raytraced.glass", graph::QueueKind::Compute,
         [&](graph::PassBuilder& b, Data& data) {
@@ -105,7 +104,7 @@ graph::ImageHandle RaytracePass::addGlass(graph::RenderGraph& g, const FrameInpu
             data.out = b.storageReadWrite(atlas);  // texels outside the panes keep the clear value
             if (rt.tlasBuilt) b.accelerationStructureRead(*rt.tlasBuilt);
         },
-        [this, in, rt, push, dispatch](const Data& data, graph::PassContext& pc) {
+        [this, in, rt, push, dispatch = glass.used](const Data& data, graph::PassContext& pc) {
             VkCommandBuffer cmd = pc.cmd();
             glass_.bind(cmd);
             shader::PushDescriptors w(ctx_);

@@ -26,7 +26,8 @@ struct RaytraceInputs {
 // This frame's glass atlas layout (glass_reflect/glass_regions.hpp).
 struct RaytraceGlass {
     graph::BufferHandle regions, regionList;
-    uint32_t regionCount = 0, atlasSize = 0, usedWidth = 0, usedHeight = 0;
+    uint32_t regionCount = 0, atlasSize = 0;
+    VkExtent2D used{};  // the atlas texels holding regions, from its corner: the rest is not dispatched
 };
 
 class RaytracePass {

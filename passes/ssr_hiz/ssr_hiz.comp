@@ -3,6 +3,7 @@
 #define SSR_USES_HIZ 1
 #include "ssr_common/ssr_pixel.glsl"
 #include "hiz/hiz.h"
+#include "hiz/hiz_level0.glsl"
 #include "ssr_common/ssr_cells.glsl"
 
 // ssr-hiz: the ray walks the depth hierarchy (hiz/hiz.h) instead of every pixel (Uludag 2014). A cell
@@ -15,12 +16,9 @@
 // pixel coordinates, so both the cell exits and the point where the ray reaches a depth are one
 // division each.
 
-// The hierarchy's value of a cell: level 0 is the depth buffer itself (padding beyond the screen
-// empty), levels 1.. are in the atlas.
+// The hierarchy's value of a cell: level 0 is the depth buffer itself, levels 1.. are in the atlas.
 float hizCellMin(int level, ivec2 origin, ivec2 cell) {
-    if (level == 0)
-        return all(lessThan(cell, ivec2(frame.screenSize))) ? hizFromReverseZ(texelFetch(depthTex, cell, 0).r) : kHizEmpty;
-    return imageLoad(hizAtlas, origin + cell).r;
+    return level == 0 ? hizLevel0(depthTex, cell) : imageLoad(hizAtlas, origin + cell).r;
 }
 
 bool ssrTrace(SsrRay ray, out vec2 hitPixel) {

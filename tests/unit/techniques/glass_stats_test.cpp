@@ -18,12 +18,12 @@ ppr::scene::GlassRegion region(glm::ivec2 origin, glm::ivec2 size) {
 TEST(GlassStats, UsedExtentIsTheFarthestRegionEdgeOnEachAxis) {
     GlassStats stats;
     stats.atlasSize = 1024;
-    EXPECT_EQ(stats.usedWidth(), 0u);
-    EXPECT_EQ(stats.usedHeight(), 0u);
+    EXPECT_EQ(stats.usedExtent().width, 0u);
+    EXPECT_EQ(stats.usedExtent().height, 0u);
     stats.layout = {region({0, 0}, {130, 500}), region({130, 0}, {250, 240}), region({0, 500}, {90, 20})};
-    EXPECT_EQ(stats.usedWidth(), 380u);   // the second region's right edge
-    EXPECT_EQ(stats.usedHeight(), 520u);  // the third region's bottom edge
+    EXPECT_EQ(stats.usedExtent().width, 380u);   // the second region's right edge
+    EXPECT_EQ(stats.usedExtent().height, 520u);  // the third region's bottom edge
     stats.layout = {region({1000, 1000}, {24, 24})};
-    EXPECT_EQ(stats.usedWidth(), 1024u);
-    EXPECT_EQ(stats.usedHeight(), 1024u);
+    EXPECT_EQ(stats.usedExtent().width, 1024u);
+    EXPECT_EQ(stats.usedExtent().height, 1024u);
 }
