@@ -30,7 +30,9 @@ nlohmann::json pprStatsJson(const CaptureResult& r, VkExtent2D size, size_t proj
             {"reflector_tile_pairs_unculled", uint64_t(s.tilesWithContent) * projected},
             {"reflector_tile_pairs", s.reflectorTilePairs},
             {"occluder_tile_pairs", s.occluderTilePairs},
-            {"max_reflectors_per_tile", s.maxTileSurvivors}};
+            {"max_reflectors_per_tile", s.maxTileSurvivors},
+            // Tiles whose survivors all share one plane and whose pixels looked them up in a grid.
+            {"tiles_plane_grid", s.tilesOnPlaneGrid}};
 }
 
 nlohmann::json makeReport(const vk::Context& ctx, const ReportInfo& info, const CaptureResult& r) {

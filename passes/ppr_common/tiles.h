@@ -39,9 +39,10 @@ struct PprFrameStats {
     uint tilesWithSurvivors;       // tiles left with at least one reflector after culling
     uint reflectorsReflecting;     // reflectors on screen showing their reflecting side (ppr.bounds's list)
     uint reflectorsOnScreen;       // reflectors on screen, either side (possible occluders)
+    uint tilesOnPlaneGrid;         // tiles whose pixels found their reflector in a plane grid (ppr_common/plane_grid.h)
 };
 PPR_END
-PPR_SIZE_CHECK(PprFrameStats, 56);
+PPR_SIZE_CHECK(PprFrameStats, 60);
 // kTileClassCount must match PprFrameStats::dispatch.
 
 PPR_BEGIN

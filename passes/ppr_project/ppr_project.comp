@@ -6,6 +6,7 @@
 #include "common/reflector_data.h"
 #include "ppr_common/encoding.h"
 #include "ppr_common/ordered_float.glsl"
+#include "ppr_common/plane_grid.h"
 #include "ppr_common/tile_culling.h"
 #include "ppr_common/tiles.h"
 #include "ppr_project/ppr_project.h"
@@ -55,6 +56,10 @@ shared uint subgroupSurvivors[kThreads];  // their sums per subgroup (gl_Subgrou
 shared uint scatteredSubgroups;           // 1 if some subgroup is not a consecutive run of invocations
 shared uint survivorCount, occluderCount;
 shared uint reachLoX, reachLoY, reachHiX, reachHiY;  // pixels the survivors can write to
+shared uint survivorPlaneLo, survivorPlaneHi;        // the least and greatest cull plane among the survivors
+// Point location where all survivors share one cull plane (ppr_common/plane_grid.h): per cell, one
+// bit per survivor rank whose rectangle may reach into it.
+shared uint gridWords[kPprPlaneGridSize * kPprPlaneGridSize * kPprPlaneGridWords];
 
 uint unpack16(uint word, uint slot) { return (word >> (16u * (slot & 1u))) & 0xFFFFu; }
 uint survivorAt(uint k) { return pc.cullTiles == 0u ? projectionOrder[k] : unpack16(survivorWords[k >> 1u], k); }
@@ -105,6 +110,10 @@ void writeGlassOffset(ivec2 pix, vec3 mirrored, uint panel) {
     imageAtomicMin(glassAtlas, texel, value);
 }
 
+// The cull plane whose grid the tile's pixels use (kPprNoCullPlane: none), the same in every thread.
+uint gridPlane = kPprNoCullPlane;
+PprPlaneGrid grid;
+
 // Builds this tile's survivor and occluder lists. Called by every thread (uniform control flow).
 void cullReflectors(vec3 lo, vec3 hi) {
     uint lid = gl_LocalInvocationIndex;
@@ -130,6 +139,7 @@ void cullReflectors(vec3 lo, vec3 hi) {
     uint first = min(lid * perThread, candidates), last = min(first + perThread, candidates);
     uint verdicts = 0u;
     uvec4 reachMine = uvec4(0xFFFFu, 0xFFFFu, 0u, 0u);  // lo x, lo y, hi x, hi y
+    uvec2 planesMine = uvec2(kPprNoCullPlane, 0u);
     for (uint k = first; k < last; ++k) {
         uint i = visibleLists[k];
         PprReflectorBounds b = bounds[i];
@@ -140,6 +150,7 @@ void cullReflectors(vec3 lo, vec3 hi) {
         uvec2 mirrored = tabled ? planeRect[plane] : b.rect;
         if (!pprTileMayReachReflector(r, b, mirrored, hitLo[plane], hitHi[plane])) continue;
         verdicts |= 1u << (k - first);
+        planesMine = uvec2(min(planesMine.x, r.cullPlane), max(planesMine.y, r.cullPlane));
         // It can only write where both rectangles overlap.
         reachMine = uvec4(min(reachMine.xy, uvec2(max(mirrored.x & 0xFFFFu, b.rect.x & 0xFFFFu), max(mirrored.x >> 16u, b.rect.x >> 16u))),
                           max(reachMine.zw, uvec2(min(mirrored.y & 0xFFFFu, b.rect.y & 0xFFFFu), min(mirrored.y >> 16u, b.rect.y >> 16u))));
@@ -156,6 +167,8 @@ void cullReflectors(vec3 lo, vec3 hi) {
         atomicMin(reachLoY, reachMine.y);
         atomicMax(reachHiX, reachMine.z);
         atomicMax(reachHiY, reachMine.w);
+        atomicMin(survivorPlaneLo, planesMine.x);
+        atomicMax(survivorPlaneHi, planesMine.y);
     }
     barrier();
     uint rank = 0u, total = 0u;
@@ -177,17 +190,38 @@ void cullReflectors(vec3 lo, vec3 hi) {
     }
     if (lid == 0u) survivorCount = total;
     barrier();
+    // With all survivors in one cull plane, and enough of them, pixels look them up in a grid.
+    uint sharedPlane = survivorPlaneLo == survivorPlaneHi ? survivorPlaneLo : kPprNoCullPlane;
+    gridPlane = sharedPlane != kPprNoCullPlane && survivorCount >= kPprPlaneGridMinSurvivors &&
+                survivorCount <= kPprPlaneGridMaxSurvivors ? sharedPlane : kPprNoCullPlane;  // uniform
+    if (gridPlane != kPprNoCullPlane)
+        for (uint w = lid; w < kPprPlaneGridSize * kPprPlaneGridSize * kPprPlaneGridWords; w += kThreads) gridWords[w] = 0u;
     // Possible occluders: every reflector on screen (either side facing) whose screen rectangle meets
     // the pixels the survivors can write to.
+    // Glass occludes nothing, and where every survivor lies in one cull plane a reflector of that plane
+    // cannot either: the segment eye → hit ends in its plane (the per-pixel test's t ≈ 1, which it
+    // rejects), so neither is gathered. That keeps a floor of coplanar tiles from testing its neighbours.
     uvec2 reach = uvec2(reachLoX | (reachLoY << 16u), reachHiX | (reachHiY << 16u));
     for (uint base = 0u; base < visibleCounts.onScreen; base += kThreads) {
         uint k = base + lid, j = k < visibleCounts.onScreen ? visibleLists[pc.reflectorCount + k] : 0u;
-        if (k < visibleCounts.onScreen && survivorCount > 0u && pprRectsOverlap(bounds[j].rect, reach)) {
+        bool cannotOcclude = reflectors[j].kind == kReflectorGlass || (sharedPlane != kPprNoCullPlane && reflectors[j].cullPlane == sharedPlane);
+        if (k < visibleCounts.onScreen && survivorCount > 0u && !cannotOcclude && pprRectsOverlap(bounds[j].rect, reach)) {
             uint slot = atomicAdd(occluderCount, 1u);
             atomicOr(occluderWords[slot >> 1u], j << (16u * (slot & 1u)));
         }
     }
     barrier();
+    if (gridPlane != kPprNoCullPlane) {
+        ReflectorData leader = reflectors[planeLeaders[gridPlane]];
+        grid = pprPlaneGridOver(hitLo[gridPlane], hitHi[gridPlane], leader.tangent, leader.bitangent);
+        for (uint k = lid; k < survivorCount; k += kThreads) {
+            uvec4 cells = pprPlaneGridCellsOf(grid, reflectors[survivorAt(k)]);
+            for (uint y = cells.y; y <= cells.w; ++y)
+                for (uint x = cells.x; x <= cells.z; ++x)
+                    atomicOr(gridWords[(x + y * kPprPlaneGridSize) * kPprPlaneGridWords + (k >> 5u)], 1u << (k & 31u));
+        }
+        barrier();
+    }
 }
 
 // The screen tile this workgroup projects: its id, or with the reach pass's list, the id-th listed tile.
@@ -199,12 +233,62 @@ ivec2 pixelOf(uint j) {
     return ivec2(tile) * int(kPprTileSize) + ivec2(i % kPprTileSize, i / kPprTileSize);
 }
 
+// Mirrors the pixel at p in reflector `plane`'s plane: its height d above it, its mirror image and
+// where the ray from the eye to that image crosses the plane. False when the pixel is not above the
+// plane, the camera sees the plane from behind, or (facing=1) the mirrored eye sees the surface from behind.
+bool mirrorInPlane(vec3 p, vec3 eye, vec3 surfaceNormal, float above, uint plane, out float d, out vec3 mirrored, out vec3 hit) {
+    vec3 center = reflectors[plane].center, normal = reflectors[plane].normal;
+    d = dot(p - center, normal);
+    float eyeHeight = dot(eye - center, normal);
+    mirrored = p - 2.0 * d * normal;
+    // Ray from the camera to the mirrored point crosses the plane at eyeHeight / (eyeHeight + d).
+    hit = mix(eye, mirrored, eyeHeight / (eyeHeight + d));
+    if (d <= above || eyeHeight <= 0.0) return false;
+    if (pc.facingOnly != 0u) {  // seen from behind by the mirrored eye: hidden in this reflection
+        vec3 mirroredEye = eye - 2.0 * eyeHeight * normal;
+        if (dot(surfaceNormal, normalize(mirroredEye - p)) < kPprFacingCos) return false;
+    }
+    return true;
+}
+
+// The reflector chosen for a pixel writes its offset: glass into its atlas region, others where no
+// other reflector hides the hit.
+void writeChosen(ivec2 pix, vec3 eye, uint best, vec3 mirrored, vec3 hit, uint occluders) {
+    if (reflectors[best].kind == kReflectorGlass) writeGlassOffset(pix, mirrored, best);
+    else if (!occludedByOtherReflector(eye, hit, best, occluders)) writeOffset(pix, mirrored);
+}
+
+// A glass reflector without an atlas region this frame takes no pixels.
+bool skipped(ReflectorData r, uint i) { return r.kind == kReflectorGlass && (pc.glass == 0u || glassRegions[i].valid == 0u); }
+
+// projectPixel where every candidate lies in the grid's plane: one orientation, one mirror image, and
+// the first candidate (in projection order) whose rectangle holds the hit, among those of its cell.
+void projectPixelOnGrid(ivec2 pix, vec3 p, vec3 eye, vec3 surfaceNormal, float above, uint candidates, uint occluders) {
+    float d;
+    vec3 mirrored, hit;
+    if (!mirrorInPlane(p, eye, surfaceNormal, above, planeLeaders[gridPlane], d, mirrored, hit)) return;
+    uint cell = pprPlaneGridCell(grid, hit) * kPprPlaneGridWords;
+    for (uint w = 0u; w * 32u < candidates; ++w) {
+        for (uint bits = gridWords[cell + w]; bits != 0u; bits &= bits - 1u) {
+            uint i = survivorAt(w * 32u + uint(findLSB(bits)));
+            ReflectorData r = reflectors[i];
+            if (skipped(r, i) || !reflectorContains(r, hit)) continue;
+            writeChosen(pix, eye, i, mirrored, hit, occluders);
+            return;
+        }
+    }
+}
+
 // Projects one pixel of the tile, at world position p, into every reflector among the candidates
 // that reflects it.
 void projectPixel(ivec2 pix, vec3 p, uint candidates, uint occluders) {
     vec3 eye = frame.cameraPos.xyz;
     vec3 surfaceNormal = pc.facingOnly != 0u ? texelFetch(normalTex, pix, 0).xyz : vec3(0.0);
     float above = kPprAboveEpsilon + kPprAboveEpsilonPerMetre * distance(eye, p);
+    if (gridPlane != kPprNoCullPlane) {
+        projectPixelOnGrid(pix, p, eye, surfaceNormal, above, candidates, occluders);
+        return;
+    }
 
     // Reflectors arrive sorted by orientation. Within one orientation only the shape nearest to the
     // pixel (smallest plane distance) that reflects it is used, so each pixel is written at most once
@@ -213,32 +297,29 @@ void projectPixel(ivec2 pix, vec3 p, uint candidates, uint occluders) {
     uint best = 0xFFFFFFFFu;
     float bestDistance = 0.0;
     vec3 bestMirrored = vec3(0.0), bestHit = vec3(0.0);
+    uint plane = kPprNoCullPlane;  // the plane d, mirrored and hit were computed for
+    bool reflects = false;
+    float d = 0.0;
+    vec3 mirrored = vec3(0.0), hit = vec3(0.0);
     for (uint k = 0u; k <= candidates; ++k) {
         uint i = k < candidates ? survivorAt(k) : 0u;
         uint g = k < candidates ? reflectors[i].orientationGroup : 0xFFFFFFFEu;
         if (g != group) {
-            if (best != 0xFFFFFFFFu) {
-                if (reflectors[best].kind == kReflectorGlass) writeGlassOffset(pix, bestMirrored, best);
-                else if (!occludedByOtherReflector(eye, bestHit, best, occluders)) writeOffset(pix, bestMirrored);
-            }
+            if (best != 0xFFFFFFFFu) writeChosen(pix, eye, best, bestMirrored, bestHit, occluders);
             group = g;
             best = 0xFFFFFFFFu;
             bestDistance = 3.4e38;
         }
         if (k == candidates) break;
         ReflectorData r = reflectors[i];
-        if (r.kind == kReflectorGlass && (pc.glass == 0u || glassRegions[i].valid == 0u)) continue;  // no region this frame
-        float d = dot(p - r.center, r.normal);
-        if (d <= above || d >= bestDistance) continue;  // not above this plane, or a nearer parallel shape won
-        float eyeHeight = dot(eye - r.center, r.normal);
-        if (eyeHeight <= 0.0) continue;  // the camera sees this reflector from behind
-        vec3 mirrored = p - 2.0 * d * r.normal;
-        if (pc.facingOnly != 0u) {  // seen from behind by the mirrored eye: hidden in this reflection
-            vec3 mirroredEye = eye - 2.0 * eyeHeight * r.normal;
-            if (dot(surfaceNormal, normalize(mirroredEye - p)) < kPprFacingCos) continue;
+        if (skipped(r, i)) continue;
+        // The mirror image and the hit depend only on the plane: reflectors sharing a cull plane (tiles
+        // of one floor) use its leader's and differ only in whether their rectangle holds the hit.
+        if (r.cullPlane == kPprNoCullPlane || r.cullPlane != plane) {
+            plane = r.cullPlane;
+            reflects = mirrorInPlane(p, eye, surfaceNormal, above, plane == kPprNoCullPlane ? i : planeLeaders[plane], d, mirrored, hit);
         }
-        // Ray from the camera to the mirrored point crosses the plane at eyeHeight / (eyeHeight + d).
-        vec3 hit = mix(eye, mirrored, eyeHeight / (eyeHeight + d));
+        if (!reflects || d >= bestDistance) continue;  // a nearer parallel shape won
         if (!reflectorContains(r, hit)) continue;
         best = i;
         bestDistance = d;
@@ -258,6 +339,8 @@ void main() {
         scatteredSubgroups = 0u;
         reachLoX = reachLoY = 0xFFFFu;
         reachHiX = reachHiY = 0u;
+        survivorPlaneLo = kPprNoCullPlane;
+        survivorPlaneHi = 0u;
     }
     if (pc.cullTiles != 0u)
         for (uint w = lid; w < kPprMaxReflectors / 2u; w += kThreads) survivorWords[w] = occluderWords[w] = 0u;
@@ -305,6 +388,7 @@ void main() {
         atomicAdd(stats.reflectorTilePairs, candidates);
         atomicAdd(stats.occluderTilePairs, occluders);
         atomicMax(stats.maxTileSurvivors, candidates);
+        if (gridPlane != kPprNoCullPlane) atomicAdd(stats.tilesOnPlaneGrid, 1u);
     }
     for (uint j = 0u; j < kPixelsPerThread; ++j)
         if (points[j].w != 0.0) projectPixel(pixelOf(j), points[j].xyz, candidates, occluders);

@@ -156,6 +156,26 @@ TEST(PprTiles, CullingKeepsFewReflectorsPerTile) {
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
 
+// Where a tile's survivors share one plane (a floor of mirror tiles), its pixels look their reflector
+// up in a grid over the plane (ppr_common/plane_grid.h) instead of testing every survivor. The grid
+// runs (report.json's tiles_plane_grid) and picks what the full scan picks: the pictures with
+// culling off, which scan every reflector, are the same.
+TEST(PprTiles, PlaneGridPicksWhatTheFullScanPicks) {
+    GpuFixture f(scene::makeStressScene(1024));
+    for (const char* camera : {"overview", "reflective_25"}) {
+        const Frame fr = render(f, f.camera(camera), "1", "1");
+        ASSERT_TRUE(fr.capture.pprStats);
+        const gpu::PprFrameStats& s = *fr.capture.pprStats;
+        std::printf("%s: %u of %u tiles with survivors used the plane grid\n", camera, s.tilesOnPlaneGrid, s.tilesWithSurvivors);
+        EXPECT_GT(s.tilesOnPlaneGrid, s.tilesWithSurvivors / 4) << camera;
+        EXPECT_LE(s.tilesOnPlaneGrid, s.tilesWithSurvivors) << camera;
+        const Frame scan = render(f, f.camera(camera), "0", "0");
+        EXPECT_EQ(scan.capture.pprStats->tilesOnPlaneGrid, 0u) << camera << ": without culling there are no per-tile lists";
+        EXPECT_TRUE(identical(fr.reflection, scan.reflection)) << camera << ": the grid chose differently from the full scan";
+    }
+    EXPECT_EQ(f.ctx->validationErrors(), 0u);
+}
+
 // The bounds pass compacts the frame's reflectors: every tile's culling and the reach pass loop over
 // those on screen (either side: occluders) and those among them showing their reflecting side
 // (candidates). The counts are the host's, from the same shared header (within 2: a rectangle at
