@@ -10,7 +10,7 @@ namespace ppr::passes {
 
 struct PprBoundsOutputs {
     graph::BufferHandle bounds;   // "ppr.reflector_bounds": PprReflectorBounds per reflector (at least one entry)
-    graph::BufferHandle visible;  // "ppr.visible_reflectors": PprVisibleCounts, then the two lists (tile_culling.h)
+    graph::BufferHandle visible;  // "ppr.visible_reflectors": PprVisibleCounts, the chunk summaries, then the two lists (tile_culling.h)
     graph::BufferHandle stats;    // PprFrameStats with the two counts written
 };
 

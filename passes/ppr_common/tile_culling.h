@@ -202,7 +202,7 @@ PPR_INLINE void pprTileHitRegion(vec3 lo, vec3 hi, vec3 planeNormal, vec3 planeP
 
 // Does the reflector's rectangle meet the world-space box lo..hi?
 PPR_INLINE bool pprRectangleMeetsBox(ReflectorData r, vec3 lo, vec3 hi) {
-    vec3 extent = abs(r.tangent) * r.halfExtentU + abs(r.bitangent) * r.halfExtentV;
+    vec3 extent = abs(r.tangent) * r.halfExtentU + abs(r.bitangent) * r.halfExtentV;  // as pprRectangleBox
     return all(lessThanEqual(r.center - extent, hi)) && all(lessThanEqual(lo, r.center + extent));
 }
 
@@ -235,5 +235,43 @@ struct PprVisibleCounts {
 };
 PPR_END
 PPR_SIZE_CHECK(PprVisibleCounts, 16);
+
+// Candidates per culling chunk: the bounds pass summarises each run of kPprCullChunk consecutive
+// candidates (ranks 8c .. 8c + 7 of the reflecting list), and a tile that the summary rules out
+// skips the run's reflectors without reading them.
+PPR_CONST(uint, kPprCullChunk, 8u)
+PPR_CONST(uint, kPprCullChunkCount, 128u)  // kPprMaxReflectors / kPprCullChunk
+
+PPR_BEGIN
+// A chunk's summary: the union of its reflectors' screen rectangles, the union of their world boxes
+// (pprRectangleMeetsBox's, grown by kPprCullSlack against rounding between the shaders that compute
+// them) and their cull plane when they share one (else kPprNoCullPlane).
+struct PprCullChunk {
+    uvec2 rect;
+    vec3 boxLo;
+    uint cullPlane;
+    vec3 boxHi;
+    uint pad0;
+};
+PPR_END
+PPR_SIZE_CHECK(PprCullChunk, 40);
+
+PPR_BEGIN
+// The world box pprRectangleMeetsBox tests a reflector's rectangle by.
+PPR_INLINE void pprRectangleBox(ReflectorData r, PPR_OUT(vec3) lo, PPR_OUT(vec3) hi) {
+    vec3 extent = abs(r.tangent) * r.halfExtentU + abs(r.bitangent) * r.halfExtentV;
+    lo = r.center - extent;
+    hi = r.center + extent;
+}
+
+// May any reflector of the chunk pass pprTileMayReachReflector for the tile? Conservative: a
+// reflector that passes shares the chunk's plane (so `mirrored` and the hit region are its plane's),
+// its rectangle lies in the chunk's and its box in the chunk's box. Chunks mixing planes, or
+// holding reflectors beyond the plane tables, are never ruled out.
+PPR_INLINE bool pprTileMayReachChunk(PprCullChunk c, uvec2 mirrored, vec3 hitLo, vec3 hitHi) {
+    if (c.cullPlane == kPprNoCullPlane) return true;
+    return pprRectsOverlap(mirrored, c.rect) && all(lessThanEqual(c.boxLo, hitHi)) && all(lessThanEqual(hitLo, c.boxHi));
+}
+PPR_END
 
 #endif

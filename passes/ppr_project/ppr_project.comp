@@ -39,7 +39,7 @@ layout(set = 0, binding = 9, r32ui) uniform uimage2D glassAtlas;
 layout(set = 0, binding = 10, scalar) readonly buffer GlassRegions { GlassRegionData glassRegions[]; };  // per reflector
 layout(set = 0, binding = 11) uniform sampler2D normalTex;  // G-buffer normal (pc.facingOnly)
 layout(set = 0, binding = 12, scalar) readonly buffer ReachTiles { uint reachTiles[]; };  // pc.tileList: the tiles to project
-layout(set = 0, binding = 13, scalar) readonly buffer Visible { PprVisibleCounts visibleCounts; uint visibleLists[]; };
+layout(set = 0, binding = 13, scalar) readonly buffer Visible { PprVisibleCounts visibleCounts; PprCullChunk cullChunks[kPprCullChunkCount]; uint visibleLists[]; };
 layout(push_constant, scalar) uniform Push { PprProjectPush pc; };
 
 const uint kPixelsPerThread = kPprTileSize * kPprTileSize / kThreads;
@@ -141,6 +141,14 @@ void cullReflectors(vec3 lo, vec3 hi) {
     uvec4 reachMine = uvec4(0xFFFFu, 0xFFFFu, 0u, 0u);  // lo x, lo y, hi x, hi y
     uvec2 planesMine = uvec2(kPprNoCullPlane, 0u);
     for (uint k = first; k < last; ++k) {
+        if (k == first || k % kPprCullChunk == 0u) {  // entering a chunk: skip it whole when its summary rules it out
+            PprCullChunk chunk = cullChunks[k / kPprCullChunk];
+            uint plane = chunk.cullPlane == kPprNoCullPlane ? 0u : chunk.cullPlane;
+            if (!pprTileMayReachChunk(chunk, planeRect[plane], hitLo[plane], hitHi[plane])) {
+                k = min(last, (k / kPprCullChunk + 1u) * kPprCullChunk) - 1u;
+                continue;
+            }
+        }
         uint i = visibleLists[k];
         PprReflectorBounds b = bounds[i];
         ReflectorData r = reflectors[i];
@@ -202,10 +210,11 @@ void cullReflectors(vec3 lo, vec3 hi) {
     // cannot either: the segment eye → hit ends in its plane (the per-pixel test's t ≈ 1, which it
     // rejects), so neither is gathered. That keeps a floor of coplanar tiles from testing its neighbours.
     uvec2 reach = uvec2(reachLoX | (reachLoY << 16u), reachHiX | (reachHiY << 16u));
-    for (uint base = 0u; base < visibleCounts.onScreen; base += kThreads) {
-        uint k = base + lid, j = k < visibleCounts.onScreen ? visibleLists[pc.reflectorCount + k] : 0u;
-        bool cannotOcclude = reflectors[j].kind == kReflectorGlass || (sharedPlane != kPprNoCullPlane && reflectors[j].cullPlane == sharedPlane);
-        if (k < visibleCounts.onScreen && survivorCount > 0u && !cannotOcclude && pprRectsOverlap(bounds[j].rect, reach)) {
+    uint onScreen = survivorCount > 0u ? visibleCounts.onScreen : 0u;  // no survivor, nothing to occlude
+    for (uint base = 0u; base < onScreen; base += kThreads) {
+        uint k = base + lid, j = k < onScreen ? visibleLists[pc.reflectorCount + k] : 0u;
+        if (k < onScreen && pprRectsOverlap(bounds[j].rect, reach) && reflectors[j].kind != kReflectorGlass &&
+            (sharedPlane == kPprNoCullPlane || reflectors[j].cullPlane != sharedPlane)) {
             uint slot = atomicAdd(occluderCount, 1u);
             atomicOr(occluderWords[slot >> 1u], j << (16u * (slot & 1u)));
         }

@@ -794,3 +794,57 @@ TEST(PprTileCulling, CullPlanesShareAcrossPlaneGroupBoundaries) {
 }
 
 }  // namespace
+
+// The bounds pass's chunk summaries (PprCullChunk): a tile skips a run of up to kPprCullChunk
+// candidates when the summary rules it out, so the summary must never rule out a run holding a
+// reflector pprTileMayReachReflector keeps. Random coplanar runs around a random tile, summarised
+// as the bounds pass does (union of screen rectangles, union of pprRectangleBox grown by the slack).
+TEST(PprTileCulling, ChunkSummaryNeverRulesOutAKeptReflector) {
+    Rng rng(20261127u);
+    int runsWithAKept = 0, ruledOut = 0;
+    for (int c = 0; c < 20000; ++c) {
+        const View v = randomView(rng);
+        const Tile tile = randomTile(rng, v);
+        const Rect first = randomReflector(rng, v, tile, rng.chance(0.5f) ? Kind::Targeted : Kind::AimedRandomNormal);
+        const float spread = rng.logUni(0.5f, 8.0f);
+        ppr::gpu::PprCullChunk chunk{};
+        chunk.rect = uvec2(0xFFFFFFFFu, 0u);
+        chunk.boxLo = vec3(3.4e38f);
+        chunk.boxHi = vec3(-3.4e38f);
+        chunk.cullPlane = 0u;
+        uvec2 lo(0xFFFFu), hi(0u);
+        bool anyKept = false, anyMember = false;
+        CullVerdict plane{};
+        for (uint32_t m = 0; m < ppr::gpu::kPprCullChunk; ++m) {
+            Rect r = first;
+            if (m > 0) {  // a coplanar neighbour (cull planes allow 10 µm), turned in the plane
+                r.tangent = tangentFor(rng, r.normal);
+                r.hu = rng.logUni(0.05f, 5.0f);
+                r.hv = rng.logUni(0.05f, 5.0f);
+                r.center += (first.tangent * rng.uni(-1, 1) + first.bitangent() * rng.uni(-1, 1)) * spread * (first.hu + first.hv) +
+                            r.normal * rng.uni(-1e-5f, 1e-5f);
+            }
+            const CullVerdict verdict = cull(v, r, tile.lo, tile.hi, first.center);  // the plane through the leader's centre
+            if (m == 0) plane = verdict;
+            if (!verdict.reflects || !ppr::gpu::pprRectsOverlap(verdict.reflectorRect, verdict.reflectorRect)) continue;  // not a candidate
+            anyMember = true;
+            anyKept = anyKept || verdict.kept();
+            const uvec2 rect = verdict.reflectorRect;
+            lo = glm::min(lo, uvec2(rect.x & 0xFFFFu, rect.x >> 16u));
+            hi = glm::max(hi, uvec2(rect.y & 0xFFFFu, rect.y >> 16u));
+            vec3 boxLo, boxHi;
+            ppr::gpu::pprRectangleBox(verdict.reflector, boxLo, boxHi);
+            chunk.boxLo = glm::min(chunk.boxLo, boxLo - vec3(ppr::gpu::kPprCullSlack));
+            chunk.boxHi = glm::max(chunk.boxHi, boxHi + vec3(ppr::gpu::kPprCullSlack));
+        }
+        if (!anyMember) continue;
+        chunk.rect = uvec2(lo.x | (lo.y << 16u), hi.x | (hi.y << 16u));
+        const bool mayReach = ppr::gpu::pprTileMayReachChunk(chunk, plane.tileRect, plane.hitLo, plane.hitHi);
+        runsWithAKept += anyKept;
+        ruledOut += !mayReach;
+        ASSERT_TRUE(mayReach || !anyKept) << "case " << c << ": the summary ruled out a run with a kept reflector\n  " << describe(v, first);
+    }
+    std::printf("runs with a kept reflector %d, runs ruled out %d\n", runsWithAKept, ruledOut);
+    EXPECT_GT(runsWithAKept, 1000);
+    EXPECT_GT(ruledOut, 1000) << "the summary should rule out runs far from the tile's reflection";
+}
