@@ -19,7 +19,7 @@ ReflectorBuffer::~ReflectorBuffer() {
 std::vector<uint32_t> ReflectorBuffer::cullPlanes(const std::vector<scene::Reflector>& rs, const scene::ReflectorGroups& groups) {
     // Same plane to within what the culling slack absorbs: identical normal, offsets 10 µm apart.
     // Leaders are searched per orientation group (plane groups are not transitive).
-    constexpr float kSamePlane = 1e-5f;
+    constexpr float kSamePlane = gpu::kPprCullPlaneTolerance;
     std::vector<uint32_t> out(rs.size());
     std::vector<std::vector<uint32_t>> leaders(groups.orientationGroupCount);
     for (uint32_t i = 0; i < rs.size(); ++i) {

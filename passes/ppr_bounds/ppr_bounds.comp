@@ -13,12 +13,13 @@
 // the reach pass loop over the reflectors on screen, not over all of them. One workgroup: each
 // invocation takes a contiguous run of the projection order, and a scan of the runs' counts ranks
 // them, so the lists keep projection order and never depend on thread timing. Every run of
-// kPprCullChunk candidates gets a summary (PprCullChunk) that lets a tile skip the run unread.
+// kPprCullChunk candidates gets a summary (PprCullChunk) that lets a tile skip the run unread, and
+// so does every run of the on-screen list (after the candidates' summaries).
 layout(local_size_x = kPprBoundsGroupSize) in;
 layout(set = 0, binding = 1, scalar) readonly buffer Reflectors { ReflectorData reflectors[]; };
 layout(set = 0, binding = 2, scalar) writeonly buffer Bounds { PprReflectorBounds bounds[]; };
 layout(set = 0, binding = 3, scalar) readonly buffer Order { uint projectionOrder[]; };
-layout(set = 0, binding = 4, scalar) writeonly buffer Visible { PprVisibleCounts visibleCounts; PprCullChunk cullChunks[kPprCullChunkCount]; uint visibleLists[]; };
+layout(set = 0, binding = 4, scalar) writeonly buffer Visible { PPR_VISIBLE_REFLECTORS; };
 layout(set = 0, binding = 5, scalar) buffer Stats { PprFrameStats stats; };
 layout(push_constant, scalar) uniform Push { PprBoundsPush pc; };
 
@@ -27,6 +28,9 @@ shared uint counts[kPprBoundsGroupSize];  // per run: reflecting (low 16 bits) a
 shared uint chunkLoX[kPprCullChunkCount], chunkLoY[kPprCullChunkCount], chunkHiX[kPprCullChunkCount], chunkHiY[kPprCullChunkCount];
 shared uvec3 chunkBoxLo[kPprCullChunkCount], chunkBoxHi[kPprCullChunkCount];
 shared uint chunkPlaneLo[kPprCullChunkCount], chunkPlaneHi[kPprCullChunkCount];
+// The same for the on-screen list's runs (no boxes), and 1 while every reflector of the run is glass.
+shared uint seenLoX[kPprCullChunkCount], seenLoY[kPprCullChunkCount], seenHiX[kPprCullChunkCount], seenHiY[kPprCullChunkCount];
+shared uint seenPlaneLo[kPprCullChunkCount], seenPlaneHi[kPprCullChunkCount], seenGlass[kPprCullChunkCount];
 
 void main() {
     uint lid = gl_LocalInvocationIndex;
@@ -50,6 +54,9 @@ void main() {
         chunkHiX[c] = chunkHiY[c] = chunkPlaneHi[c] = 0u;
         chunkBoxLo[c] = uvec3(0xFFFFFFFFu);
         chunkBoxHi[c] = uvec3(0u);
+        seenLoX[c] = seenLoY[c] = seenPlaneLo[c] = 0xFFFFFFFFu;
+        seenHiX[c] = seenHiY[c] = seenPlaneHi[c] = 0u;
+        seenGlass[c] = 1u;
     }
     barrier();
     // Inclusive scan of the runs' counts (Hillis–Steele: log2 of the group size steps).
@@ -63,10 +70,11 @@ void main() {
     uint r = before & 0xFFFFu, s = before >> 16u;
     for (uint k = first; k < last; ++k) {
         uint bit = 1u << (k - first), i = projectionOrder[k];
+        if ((onScreen & bit) == 0u) continue;
+        ReflectorData reflector = reflectors[i];
+        uvec2 rect = rects[k - first];
         if ((reflecting & bit) != 0u) {
             uint c = r / kPprCullChunk;
-            ReflectorData reflector = reflectors[i];
-            uvec2 rect = rects[k - first];
             vec3 lo, hi;
             pprRectangleBox(reflector, lo, hi);
             atomicMin(chunkLoX[c], rect.x & 0xFFFFu);
@@ -84,7 +92,15 @@ void main() {
             atomicMax(chunkPlaneHi[c], reflector.cullPlane);
             visibleLists[r++] = i;
         }
-        if ((onScreen & bit) != 0u) visibleLists[pc.reflectorCount + s++] = i;
+        uint c = s / kPprCullChunk;
+        atomicMin(seenLoX[c], rect.x & 0xFFFFu);
+        atomicMin(seenLoY[c], rect.x >> 16u);
+        atomicMax(seenHiX[c], rect.y & 0xFFFFu);
+        atomicMax(seenHiY[c], rect.y >> 16u);
+        atomicMin(seenPlaneLo[c], reflector.cullPlane);
+        atomicMax(seenPlaneHi[c], reflector.cullPlane);
+        if (reflector.kind != kReflectorGlass) atomicAnd(seenGlass[c], 0u);
+        visibleLists[pc.reflectorCount + s++] = i;
     }
     barrier();
     uint total = counts[kPprBoundsGroupSize - 1u];
@@ -94,8 +110,17 @@ void main() {
         chunk.boxLo = floatFromOrdered(chunkBoxLo[c]);
         chunk.boxHi = floatFromOrdered(chunkBoxHi[c]);
         chunk.cullPlane = chunkPlaneLo[c] == chunkPlaneHi[c] ? chunkPlaneLo[c] : kPprNoCullPlane;
-        chunk.pad0 = 0u;
+        chunk.allGlass = 0u;
         cullChunks[c] = chunk;
+    }
+    for (uint c = lid; c * kPprCullChunk < (total >> 16u); c += kPprBoundsGroupSize) {
+        PprCullChunk chunk;
+        chunk.rect = uvec2(seenLoX[c] | (seenLoY[c] << 16u), seenHiX[c] | (seenHiY[c] << 16u));
+        chunk.boxLo = vec3(0.0);
+        chunk.boxHi = vec3(0.0);
+        chunk.cullPlane = seenPlaneLo[c] == seenPlaneHi[c] ? seenPlaneLo[c] : kPprNoCullPlane;
+        chunk.allGlass = seenGlass[c];
+        cullChunks[kPprCullChunkCount + c] = chunk;
     }
     if (lid == kPprBoundsGroupSize - 1u) {
         visibleCounts = PprVisibleCounts(total & 0xFFFFu, total >> 16u, 0u, 0u);

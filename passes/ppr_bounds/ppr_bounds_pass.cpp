@@ -15,6 +15,8 @@ static_assert(gpu::kPprMaxReflectors <= 32u * gpu::kPprBoundsGroupSize && gpu::k
               "ppr.bounds compacts every reflector in one workgroup");
 static_assert(gpu::kPprMaxReflectors % gpu::kPprBoundsGroupSize == 0u, "a run's rectangles fit the shader's array");
 static_assert(gpu::kPprCullChunkCount * gpu::kPprCullChunk == gpu::kPprMaxReflectors, "a chunk summary for every run of candidates");
+static_assert(gpu::kPprVisibleListsOffset == sizeof(gpu::PprVisibleCounts) + 2 * gpu::kPprCullChunkCount * sizeof(gpu::PprCullChunk),
+              "PPR_VISIBLE_REFLECTORS's layout");
 
 PprBoundsPass::PprBoundsPass(const vk::Context& ctx) : ctx_(ctx) {
     shader::PipelineLayoutDesc layout;
@@ -32,7 +34,7 @@ PprBoundsOutputs PprBoundsPass::add(graph::RenderGraph& g, const FrameInputs& in
         .hostStorage(r.reflectors)
         .storageWrite(g.createBuffer("ppr.reflector_bounds", {sizeof(gpu::PprReflectorBounds) * entries}), &out.bounds)
         .hostStorage(r.order)
-        .storageWrite(g.createBuffer("ppr.visible_reflectors", {sizeof(gpu::PprVisibleCounts) + sizeof(gpu::PprCullChunk) * gpu::kPprCullChunkCount + 2 * sizeof(uint32_t) * entries}),
+        .storageWrite(g.createBuffer("ppr.visible_reflectors", {gpu::kPprVisibleListsOffset + 2 * sizeof(uint32_t) * entries}),
                       &out.visible)
         .storageReadWrite(stats, &out.stats)
         .push(push)

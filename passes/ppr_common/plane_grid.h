@@ -1,11 +1,10 @@
 // A small grid over one plane, for the projection pass's point location (host/device shared,
 // unit-tested in tests/unit/ppr/plane_grid_test.cpp). When every reflector a tile keeps lies in one
-// cull plane (a floor of mirror tiles), every pixel of the tile mirrors to the same plane and only
-// asks which of them holds its hit point; the first in projection order wins. Scanning all of them
-// made the pass cost 24 times as much per pixel at 1 024 tiles as at one. Instead the tile marks,
-// per grid cell, the reflectors whose rectangle may reach into it, and a pixel tests only those of
-// its hit's cell, still in projection order, with the same exact test (reflectorContains): so the
-// chosen reflector, and every image, stay the same.
+// cull plane (a floor of mirror tiles), every pixel of the tile mirrors to (nearly) the same plane and
+// only asks which of them holds its hit point. Scanning all of them made the pass cost 24 times as
+// much per pixel at 1 024 tiles as at one. Instead the tile marks, per grid cell, the reflectors whose
+// rectangle may reach into it, and a pixel runs the scan's exact per-reflector test over those of the
+// cells around its hit only, in the same order: so the chosen reflector, and every image, stay the same.
 //
 // Conservative by construction: a rectangle's cells are those of its bounding box in the plane
 // axes, grown by a slack for float rounding, and cells come from clamp(floor((coord − origin) ·
@@ -15,6 +14,7 @@
 #ifndef PPR_PLANE_GRID_H
 #define PPR_PLANE_GRID_H
 #include "common/reflector_data.h"
+#include "ppr_common/tile_culling.h"
 #include "shader/shared.h"
 
 PPR_CONST(uint, kPprPlaneGridSize, 8u)  // cells per axis
@@ -66,6 +66,27 @@ PPR_INLINE uint pprPlaneGridCell(PprPlaneGrid g, vec3 p) {
     return pprPlaneGridColumn(dot(p, g.axisU), g.origin.x, g.scale.x) +
            kPprPlaneGridSize * pprPlaneGridColumn(dot(p, g.axisV), g.origin.y, g.scale.y);
 }
+
+// The inclusive cell range (lo x, lo y, hi x, hi y) of the points within `margin` (metres, along each
+// axis) of p.
+PPR_INLINE uvec4 pprPlaneGridCellsAround(PprPlaneGrid g, vec3 p, float margin) {
+    vec2 c = vec2(dot(p, g.axisU), dot(p, g.axisV));
+    return uvec4(pprPlaneGridColumn(c.x - margin, g.origin.x, g.scale.x), pprPlaneGridColumn(c.y - margin, g.origin.y, g.scale.y),
+                 pprPlaneGridColumn(c.x + margin, g.origin.x, g.scale.x), pprPlaneGridColumn(c.y + margin, g.origin.y, g.scale.y));
+}
+
+// How far (metres) from the hit in the plane leader's plane a reflector of the same cull plane may
+// see the same pixel's hit in its own: the planes lie up to kPprCullPlaneTolerance apart, plus the
+// rounding of the heights, and the hit moves by that times (1 / the cosine of the ray with the
+// normal, plus 2). p: the pixel's point; mirrored: its image in the leader's plane; span: the
+// heights of p and the eye above that plane, added.
+PPR_INLINE float pprPlaneGridLookupMargin(vec3 p, vec3 eye, vec3 leaderCenter, vec3 mirrored, float span) {
+    float rounding = 1e-6f * (distance(p, leaderCenter) + distance(eye, leaderCenter));
+    return (kPprCullPlaneTolerance + rounding) * (distance(mirrored, eye) / span + 2.0f);
+}
+
+// Do two cell ranges share a cell?
+PPR_INLINE bool pprPlaneGridRangesMeet(uvec4 a, uvec4 b) { return a.x <= b.z && b.x <= a.z && a.y <= b.w && b.y <= a.w; }
 
 // The inclusive cell range (lo x, lo y, hi x, hi y) that every point reflectorContains accepts falls in.
 PPR_INLINE uvec4 pprPlaneGridCellsOf(PprPlaneGrid g, ReflectorData r) {

@@ -36,6 +36,9 @@ PPR_CONST(float, kPprCullSlack, 1e-3f)
 // planes get kPprNoCullPlane and are kept or dropped on their own screen rectangle alone.
 PPR_CONST(uint, kPprMaxCullPlanes, 256u)
 PPR_CONST(uint, kPprNoCullPlane, 0xFFFFu)
+// Reflectors share a cull plane when their normals are identical and their centres lie within this
+// (metres) of the plane leader's plane (ReflectorBuffer::cullPlanes).
+PPR_CONST(float, kPprCullPlaneTolerance, 1e-5f)
 // An occluder plane this close to the camera (metres) projects to a sliver that float rounding can
 // miss: its screen rectangle is the whole screen.
 PPR_CONST(float, kPprNearEyePlane, 1e-3f)
@@ -238,23 +241,32 @@ PPR_SIZE_CHECK(PprVisibleCounts, 16);
 
 // Candidates per culling chunk: the bounds pass summarises each run of kPprCullChunk consecutive
 // candidates (ranks 8c .. 8c + 7 of the reflecting list), and a tile that the summary rules out
-// skips the run's reflectors without reading them.
+// skips the run's reflectors without reading them; likewise each run of the on-screen list, where a
+// tile gathers its possible occluders.
 PPR_CONST(uint, kPprCullChunk, 8u)
 PPR_CONST(uint, kPprCullChunkCount, 128u)  // kPprMaxReflectors / kPprCullChunk
 
 PPR_BEGIN
 // A chunk's summary: the union of its reflectors' screen rectangles, the union of their world boxes
 // (pprRectangleMeetsBox's, grown by kPprCullSlack against rounding between the shaders that compute
-// them) and their cull plane when they share one (else kPprNoCullPlane).
+// them; candidates' chunks only), their cull plane when they share one (else kPprNoCullPlane) and
+// whether all of them are glass (on-screen chunks only).
 struct PprCullChunk {
     uvec2 rect;
     vec3 boxLo;
     uint cullPlane;
     vec3 boxHi;
-    uint pad0;
+    uint allGlass;
 };
 PPR_END
 PPR_SIZE_CHECK(PprCullChunk, 40);
+
+// "ppr.visible_reflectors" as the shaders declare it (`buffer Visible { PPR_VISIBLE_REFLECTORS; }`):
+// the counts, the candidates' chunk summaries, the on-screen list's, then the two lists.
+#ifndef __cplusplus
+#define PPR_VISIBLE_REFLECTORS PprVisibleCounts visibleCounts; PprCullChunk cullChunks[2u * kPprCullChunkCount]; uint visibleLists[]
+#endif
+PPR_CONST(uint, kPprVisibleListsOffset, 16u + 40u * 2u * kPprCullChunkCount)  // bytes before visibleLists
 
 PPR_BEGIN
 // The world box pprRectangleMeetsBox tests a reflector's rectangle by.

@@ -39,7 +39,7 @@ layout(set = 0, binding = 9, r32ui) uniform uimage2D glassAtlas;
 layout(set = 0, binding = 10, scalar) readonly buffer GlassRegions { GlassRegionData glassRegions[]; };  // per reflector
 layout(set = 0, binding = 11) uniform sampler2D normalTex;  // G-buffer normal (pc.facingOnly)
 layout(set = 0, binding = 12, scalar) readonly buffer ReachTiles { uint reachTiles[]; };  // pc.tileList: the tiles to project
-layout(set = 0, binding = 13, scalar) readonly buffer Visible { PprVisibleCounts visibleCounts; PprCullChunk cullChunks[kPprCullChunkCount]; uint visibleLists[]; };
+layout(set = 0, binding = 13, scalar) readonly buffer Visible { PPR_VISIBLE_REFLECTORS; };
 layout(push_constant, scalar) uniform Push { PprProjectPush pc; };
 
 const uint kPixelsPerThread = kPprTileSize * kPprTileSize / kThreads;
@@ -113,6 +113,7 @@ void writeGlassOffset(ivec2 pix, vec3 mirrored, uint panel) {
 // The cull plane whose grid the tile's pixels use (kPprNoCullPlane: none), the same in every thread.
 uint gridPlane = kPprNoCullPlane;
 PprPlaneGrid grid;
+vec3 gridLeaderCenter, gridLeaderNormal;  // the plane the grid's pixels mirror themselves in
 
 // Builds this tile's survivor and occluder lists. Called by every thread (uniform control flow).
 void cullReflectors(vec3 lo, vec3 hi) {
@@ -210,19 +211,27 @@ void cullReflectors(vec3 lo, vec3 hi) {
     // cannot either: the segment eye → hit ends in its plane (the per-pixel test's t ≈ 1, which it
     // rejects), so neither is gathered. That keeps a floor of coplanar tiles from testing its neighbours.
     uvec2 reach = uvec2(reachLoX | (reachLoY << 16u), reachHiX | (reachHiY << 16u));
+    // Runs of the on-screen list whose summary rules them all out are skipped unread.
     uint onScreen = survivorCount > 0u ? visibleCounts.onScreen : 0u;  // no survivor, nothing to occlude
-    for (uint base = 0u; base < onScreen; base += kThreads) {
-        uint k = base + lid, j = k < onScreen ? visibleLists[pc.reflectorCount + k] : 0u;
-        if (k < onScreen && pprRectsOverlap(bounds[j].rect, reach) && reflectors[j].kind != kReflectorGlass &&
-            (sharedPlane == kPprNoCullPlane || reflectors[j].cullPlane != sharedPlane)) {
-            uint slot = atomicAdd(occluderCount, 1u);
-            atomicOr(occluderWords[slot >> 1u], j << (16u * (slot & 1u)));
+    for (uint c = lid; c * kPprCullChunk < onScreen; c += kThreads) {
+        PprCullChunk chunk = cullChunks[kPprCullChunkCount + c];
+        if (!pprRectsOverlap(chunk.rect, reach) || chunk.allGlass != 0u || (sharedPlane != kPprNoCullPlane && chunk.cullPlane == sharedPlane))
+            continue;
+        for (uint k = c * kPprCullChunk; k < min(onScreen, (c + 1u) * kPprCullChunk); ++k) {
+            uint j = visibleLists[pc.reflectorCount + k];
+            if (pprRectsOverlap(bounds[j].rect, reach) && reflectors[j].kind != kReflectorGlass &&
+                (sharedPlane == kPprNoCullPlane || reflectors[j].cullPlane != sharedPlane)) {
+                uint slot = atomicAdd(occluderCount, 1u);
+                atomicOr(occluderWords[slot >> 1u], j << (16u * (slot & 1u)));
+            }
         }
     }
     barrier();
     if (gridPlane != kPprNoCullPlane) {
         ReflectorData leader = reflectors[planeLeaders[gridPlane]];
         grid = pprPlaneGridOver(hitLo[gridPlane], hitHi[gridPlane], leader.tangent, leader.bitangent);
+        gridLeaderCenter = leader.center;
+        gridLeaderNormal = leader.normal;
         for (uint k = lid; k < survivorCount; k += kThreads) {
             uvec4 cells = pprPlaneGridCellsOf(grid, reflectors[survivorAt(k)]);
             for (uint y = cells.y; y <= cells.w; ++y)
@@ -242,22 +251,24 @@ ivec2 pixelOf(uint j) {
     return ivec2(tile) * int(kPprTileSize) + ivec2(i % kPprTileSize, i / kPprTileSize);
 }
 
-// Mirrors the pixel at p in reflector `plane`'s plane: its height d above it, its mirror image and
-// where the ray from the eye to that image crosses the plane. False when the pixel is not above the
-// plane, the camera sees the plane from behind, or (facing=1) the mirrored eye sees the surface from behind.
-bool mirrorInPlane(vec3 p, vec3 eye, vec3 surfaceNormal, float above, uint plane, out float d, out vec3 mirrored, out vec3 hit) {
-    vec3 center = reflectors[plane].center, normal = reflectors[plane].normal;
-    d = dot(p - center, normal);
-    float eyeHeight = dot(eye - center, normal);
-    mirrored = p - 2.0 * d * normal;
-    // Ray from the camera to the mirrored point crosses the plane at eyeHeight / (eyeHeight + d).
-    hit = mix(eye, mirrored, eyeHeight / (eyeHeight + d));
-    if (d <= above || eyeHeight <= 0.0) return false;
+// Does reflector r take the pixel at p, nearer than bestDistance? Its height d above r's plane, its
+// mirror image and where the ray from the eye to that image crosses the plane (the hit, which r's
+// rectangle must hold). Not when the pixel is not above the plane, the camera sees r from behind, or
+// (facing=1) the mirrored eye sees the surface from behind.
+bool takes(ReflectorData r, vec3 p, vec3 eye, vec3 surfaceNormal, float above, float bestDistance, out float d, out vec3 mirrored,
+           out vec3 hit) {
+    d = dot(p - r.center, r.normal);
+    if (d <= above || d >= bestDistance) return false;  // not above this plane, or a nearer parallel shape won
+    float eyeHeight = dot(eye - r.center, r.normal);
+    if (eyeHeight <= 0.0) return false;  // the camera sees this reflector from behind
+    mirrored = p - 2.0 * d * r.normal;
     if (pc.facingOnly != 0u) {  // seen from behind by the mirrored eye: hidden in this reflection
-        vec3 mirroredEye = eye - 2.0 * eyeHeight * normal;
+        vec3 mirroredEye = eye - 2.0 * eyeHeight * r.normal;
         if (dot(surfaceNormal, normalize(mirroredEye - p)) < kPprFacingCos) return false;
     }
-    return true;
+    // Ray from the camera to the mirrored point crosses the plane at eyeHeight / (eyeHeight + d).
+    hit = mix(eye, mirrored, eyeHeight / (eyeHeight + d));
+    return reflectorContains(r, hit);
 }
 
 // The reflector chosen for a pixel writes its offset: glass into its atlas region, others where no
@@ -270,22 +281,39 @@ void writeChosen(ivec2 pix, vec3 eye, uint best, vec3 mirrored, vec3 hit, uint o
 // A glass reflector without an atlas region this frame takes no pixels.
 bool skipped(ReflectorData r, uint i) { return r.kind == kReflectorGlass && (pc.glass == 0u || glassRegions[i].valid == 0u); }
 
-// projectPixel where every candidate lies in the grid's plane: one orientation, one mirror image, and
-// the first candidate (in projection order) whose rectangle holds the hit, among those of its cell.
+// projectPixel where every candidate lies in the grid's plane (one orientation): the same choice,
+// made among the candidates of the cells around the pixel's hit in the plane leader's plane. Each
+// candidate's own plane may lie up to kPprCullPlaneTolerance from the leader's, which moves its hit
+// by at most that times (1 / the cosine of the ray with the normal, plus 2): the cells within that
+// margin hold every candidate whose rectangle can hold its own hit (ppr_common/plane_grid.h).
 void projectPixelOnGrid(ivec2 pix, vec3 p, vec3 eye, vec3 surfaceNormal, float above, uint candidates, uint occluders) {
-    float d;
-    vec3 mirrored, hit;
-    if (!mirrorInPlane(p, eye, surfaceNormal, above, planeLeaders[gridPlane], d, mirrored, hit)) return;
-    uint cell = pprPlaneGridCell(grid, hit) * kPprPlaneGridWords;
+    float height = dot(p - gridLeaderCenter, gridLeaderNormal), eyeHeight = dot(eye - gridLeaderCenter, gridLeaderNormal);
+    float span = height + eyeHeight;  // the same for every candidate, up to rounding
+    if (!(span > 0.5 * kPprAboveEpsilon)) return;  // no candidate has the pixel above it and the eye in front
+    vec3 mirrored = p - 2.0 * height * gridLeaderNormal;
+    vec3 hit = mix(eye, mirrored, eyeHeight / span);
+    float margin = pprPlaneGridLookupMargin(p, eye, gridLeaderCenter, mirrored, span);
+    uvec4 cells = pprPlaneGridCellsAround(grid, hit, margin);
+    uint best = 0xFFFFFFFFu;
+    float bestDistance = 3.4e38;
+    vec3 bestMirrored = vec3(0.0), bestHit = vec3(0.0);
     for (uint w = 0u; w * 32u < candidates; ++w) {
-        for (uint bits = gridWords[cell + w]; bits != 0u; bits &= bits - 1u) {
+        uint bits = 0u;
+        for (uint y = cells.y; y <= cells.w; ++y)
+            for (uint x = cells.x; x <= cells.z; ++x) bits |= gridWords[(x + y * kPprPlaneGridSize) * kPprPlaneGridWords + w];
+        for (; bits != 0u; bits &= bits - 1u) {  // in projection order, as projectPixel's loop
             uint i = survivorAt(w * 32u + uint(findLSB(bits)));
             ReflectorData r = reflectors[i];
-            if (skipped(r, i) || !reflectorContains(r, hit)) continue;
-            writeChosen(pix, eye, i, mirrored, hit, occluders);
-            return;
+            float d;
+            vec3 m, h;
+            if (skipped(r, i) || !takes(r, p, eye, surfaceNormal, above, bestDistance, d, m, h)) continue;
+            best = i;
+            bestDistance = d;
+            bestMirrored = m;
+            bestHit = h;
         }
     }
+    if (best != 0xFFFFFFFFu) writeChosen(pix, eye, best, bestMirrored, bestHit, occluders);
 }
 
 // Projects one pixel of the tile, at world position p, into every reflector among the candidates
@@ -306,10 +334,6 @@ void projectPixel(ivec2 pix, vec3 p, uint candidates, uint occluders) {
     uint best = 0xFFFFFFFFu;
     float bestDistance = 0.0;
     vec3 bestMirrored = vec3(0.0), bestHit = vec3(0.0);
-    uint plane = kPprNoCullPlane;  // the plane d, mirrored and hit were computed for
-    bool reflects = false;
-    float d = 0.0;
-    vec3 mirrored = vec3(0.0), hit = vec3(0.0);
     for (uint k = 0u; k <= candidates; ++k) {
         uint i = k < candidates ? survivorAt(k) : 0u;
         uint g = k < candidates ? reflectors[i].orientationGroup : 0xFFFFFFFEu;
@@ -321,15 +345,9 @@ void projectPixel(ivec2 pix, vec3 p, uint candidates, uint occluders) {
         }
         if (k == candidates) break;
         ReflectorData r = reflectors[i];
-        if (skipped(r, i)) continue;
-        // The mirror image and the hit depend only on the plane: reflectors sharing a cull plane (tiles
-        // of one floor) use its leader's and differ only in whether their rectangle holds the hit.
-        if (r.cullPlane == kPprNoCullPlane || r.cullPlane != plane) {
-            plane = r.cullPlane;
-            reflects = mirrorInPlane(p, eye, surfaceNormal, above, plane == kPprNoCullPlane ? i : planeLeaders[plane], d, mirrored, hit);
-        }
-        if (!reflects || d >= bestDistance) continue;  // a nearer parallel shape won
-        if (!reflectorContains(r, hit)) continue;
+        float d;
+        vec3 mirrored, hit;
+        if (skipped(r, i) || !takes(r, p, eye, surfaceNormal, above, bestDistance, d, mirrored, hit)) continue;
         best = i;
         bestDistance = d;
         bestMirrored = mirrored;

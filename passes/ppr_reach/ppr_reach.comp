@@ -28,7 +28,7 @@ layout(set = 0, binding = 5, scalar) buffer Args { TileDispatchArgs args; };
 layout(set = 0, binding = 6, scalar) writeonly buffer ReachTiles { uint reachTiles[]; };
 layout(set = 0, binding = 7, scalar) writeonly buffer TileSurvivors { uint tileSurvivors[]; };
 layout(set = 0, binding = 8, scalar) buffer Stats { PprFrameStats stats; };
-layout(set = 0, binding = 9, scalar) readonly buffer Visible { PprVisibleCounts visibleCounts; PprCullChunk cullChunks[kPprCullChunkCount]; uint visibleLists[]; };
+layout(set = 0, binding = 9, scalar) readonly buffer Visible { PPR_VISIBLE_REFLECTORS; };
 layout(push_constant, scalar) uniform Push { PprReachPush pc; };
 
 const uint kTilesPerGroup = kPprReachGroupSize / kLanes;

@@ -21,6 +21,7 @@ struct Rng {
     explicit Rng(uint32_t seed) : gen(seed) {}
     float uni(float a, float b) { return std::uniform_real_distribution<float>(a, b)(gen); }
     float logUni(float a, float b) { return std::exp(uni(std::log(a), std::log(b))); }
+    bool chance(float p) { return uni(0.0f, 1.0f) < p; }
     vec3 unit() {
         for (;;) {
             vec3 v(uni(-1, 1), uni(-1, 1), uni(-1, 1));
@@ -45,21 +46,24 @@ bool inRange(uint32_t cell, glm::uvec4 range) {
     return x >= range.x && x <= range.z && y >= range.y && y <= range.w;
 }
 
-// Points the shader would test: the crossing of the eye → mirror-image ray with the leader's plane,
-// computed as ppr_project.comp's mirrorInPlane does, for pixels near and on the rectangle's edges.
-TEST(PprPlaneGrid, EveryContainedHitFallsInAMarkedCell) {
+// The projection's contract (ppr_project.comp, projectPixelOnGrid): a pixel whose hit in a coplanar
+// reflector's own plane lies in its rectangle (the scan's exact test) finds that reflector among the
+// cells around its hit in the plane leader's plane, within pprPlaneGridLookupMargin. Pixels near and
+// on the rectangle's edges, rays down to grazing, planes up to the cull-plane tolerance apart.
+TEST(PprPlaneGrid, EveryReflectorThatTakesAPixelIsLookedUp) {
     Rng rng(20261127);
-    int contained = 0;
+    int contained = 0, grazing = 0;
     for (int trial = 0; trial < 4000; ++trial) {
         const float scale = rng.logUni(0.01f, 500.0f);
         const vec3 normal = rng.unit();
         vec3 axis = glm::normalize(glm::cross(normal, rng.unit()));
         const vec3 leaderCenter = rng.unit() * rng.uni(0.0f, 3.0f) * scale;
         const ReflectorData leader = rectangle(leaderCenter, normal, axis, scale, scale);
-        // A coplanar reflector (cull planes allow 10 µm), turned in the plane, somewhere near.
+        // A coplanar reflector (cull planes allow kPprCullPlaneTolerance), turned in the plane, somewhere near.
         const float turn = rng.uni(0.0f, 6.2832f);
         const vec3 tangent = glm::normalize(std::cos(turn) * leader.tangent + std::sin(turn) * leader.bitangent);
-        const vec3 offset = (leader.tangent * rng.uni(-2, 2) + leader.bitangent * rng.uni(-2, 2)) * scale + normal * rng.uni(-1e-5f, 1e-5f);
+        const float tolerance = ppr::gpu::kPprCullPlaneTolerance;
+        const vec3 offset = (leader.tangent * rng.uni(-2, 2) + leader.bitangent * rng.uni(-2, 2)) * scale + normal * (rng.chance(0.8f) ? (rng.chance(0.5f) ? tolerance : -tolerance) : rng.uni(-tolerance, tolerance));
         const ReflectorData r = rectangle(leaderCenter + offset, normal, tangent, rng.logUni(0.001f, 1.0f) * scale, rng.logUni(0.001f, 1.0f) * scale);
         // The grid: sometimes around the reflector, sometimes elsewhere, tiny, empty or inverted.
         vec3 lo = leaderCenter + (rng.unit() * rng.uni(0.0f, 2.0f) - vec3(1.0f)) * scale, hi = lo + vec3(rng.uni(0, 3), rng.uni(0, 3), rng.uni(0, 3)) * scale;
@@ -71,27 +75,71 @@ TEST(PprPlaneGrid, EveryContainedHitFallsInAMarkedCell) {
         ASSERT_LE(cells.y, cells.w);
         ASSERT_LT(cells.z, ppr::gpu::kPprPlaneGridSize);
         ASSERT_LT(cells.w, ppr::gpu::kPprPlaneGridSize);
-        const vec3 eye = leaderCenter + normal * rng.logUni(0.05f, 20.0f) * scale + rng.unit() * rng.uni(0.0f, 5.0f) * scale;
+        // Eye heights down to a millionth of the scene's size: grazing rays.
+        const vec3 eye = leaderCenter + normal * rng.logUni(1e-7f, 20.0f) * scale + rng.unit() * rng.uni(0.0f, 5.0f) * scale;
         for (int k = 0; k < 40; ++k) {
             // A target on the rectangle, often right at an edge, mirrored to a point above the plane.
             float a = rng.uni(-1.0f, 1.0f), b = rng.uni(-1.0f, 1.0f);
             if (k % 4 == 0) a = a < 0 ? -1.0f : 1.0f;
             if (k % 4 == 1) b = b < 0 ? -1.0f : 1.0f;
             const vec3 onRect = r.center + r.tangent * (a * r.halfExtentU) + r.bitangent * (b * r.halfExtentV);
-            const vec3 p = onRect + (glm::normalize(onRect - eye) + 2.0f * normal * rng.uni(0.01f, 1.0f)) * rng.logUni(0.01f, 10.0f) * scale;
-            const float d = glm::dot(p - leader.center, leader.normal);
-            const float eyeHeight = glm::dot(eye - leader.center, leader.normal);
-            if (d <= 0.0f || eyeHeight <= 0.0f) continue;
-            const vec3 mirrored = p - 2.0f * d * leader.normal;
-            const vec3 hit = glm::mix(eye, mirrored, eyeHeight / (eyeHeight + d));
+            // The pixel's point lies on the ray from the mirrored eye through its hit.
+            const vec3 mirroredEye = eye - 2.0f * glm::dot(eye - r.center, r.normal) * r.normal;
+            const vec3 p = onRect + (onRect - mirroredEye) * rng.logUni(0.01f, 10.0f);
+            // The scan's test in r's own plane (ppr_project.comp's takes()).
+            const float d = glm::dot(p - r.center, r.normal), eyeHeight = glm::dot(eye - r.center, r.normal);
+            if (d <= 1e-3f || eyeHeight <= 0.0f) continue;
+            const vec3 hit = glm::mix(eye, p - 2.0f * d * r.normal, eyeHeight / (eyeHeight + d));
             if (!ppr::gpu::reflectorContains(r, hit)) continue;
+            // The lookup in the leader's plane (projectPixelOnGrid).
+            const float height = glm::dot(p - leader.center, leader.normal), leaderEyeHeight = glm::dot(eye - leader.center, leader.normal);
+            const float span = height + leaderEyeHeight;
+            ASSERT_GT(span, 0.5e-3f) << "the grid path would give up on a pixel a reflector takes";
+            const vec3 mirrored = p - 2.0f * height * leader.normal;
+            const vec3 leaderHit = glm::mix(eye, mirrored, leaderEyeHeight / span);
+            const float margin = ppr::gpu::pprPlaneGridLookupMargin(p, eye, leader.center, mirrored, span);
             ++contained;
-            ASSERT_TRUE(inRange(ppr::gpu::pprPlaneGridCell(g, hit), cells))
-                << "trial " << trial << ": a point the rectangle holds fell outside its cells " << cells.x << ".." << cells.z << " x "
-                << cells.y << ".." << cells.w << " (cell " << ppr::gpu::pprPlaneGridCell(g, hit) << ")";
+            grazing += glm::distance(mirrored, eye) / span > 100.0f;
+            ASSERT_TRUE(ppr::gpu::pprPlaneGridRangesMeet(ppr::gpu::pprPlaneGridCellsAround(g, leaderHit, margin), cells))
+                << "trial " << trial << " point " << k << ": the lookup missed a reflector that takes the pixel (cells " << cells.x << ".."
+                << cells.z << " x " << cells.y << ".." << cells.w << ")";
         }
     }
     EXPECT_GT(contained, 10000) << "the trials should produce many contained hits, edges included";
+    EXPECT_GT(grazing, 100) << "and some at grazing angles";
+}
+
+// At grazing angles a hit moves far when the plane moves a little: a camera 0.1 mm above a floor,
+// a reflector of the same cull plane 10 µm above the leader's. The hit in the leader's plane lies
+// cells away from the reflector's own, and only the lookup margin finds the reflector.
+TEST(PprPlaneGrid, GrazingHitsFarFromTheLeadersPlaneAreStillLookedUp) {
+    const vec3 up(0, 1, 0), east(1, 0, 0), south(0, 0, 1);
+    const ReflectorData leader = rectangle(vec3(0), up, east, 1, 1);
+    const ReflectorData r = rectangle(vec3(0.05f, ppr::gpu::kPprCullPlaneTolerance, 0), up, east, 0.05f, 0.05f);
+    const PprPlaneGrid g = ppr::gpu::pprPlaneGridOver(vec3(-0.4f, 0, -0.4f), vec3(0.4f, 0, 0.4f), east, south);  // 10 cm cells
+    const glm::uvec4 cells = ppr::gpu::pprPlaneGridCellsOf(g, r);
+    const vec3 eye(-100.0f, 1e-4f, 0.0f);
+    int taken = 0, farOff = 0;
+    for (int i = 0; i <= 100; ++i)
+        for (float height : {2e-3f, 5e-3f, 2e-2f}) {
+            // The point at `height` above r whose hit in r's plane is at x along its middle line.
+            const float x = -0.05f + 0.2f * float(i) / 100.0f;
+            const vec3 onR(x, r.center.y, 0.0f), mirroredEye = eye - 2.0f * (eye.y - r.center.y) * up;
+            const vec3 ray = onR - mirroredEye;
+            const vec3 p = onR + ray * (height / ray.y);
+            const float d = glm::dot(p - r.center, up), eyeHeight = glm::dot(eye - r.center, up);
+            const vec3 hit = glm::mix(eye, p - 2.0f * d * up, eyeHeight / (eyeHeight + d));
+            if (!ppr::gpu::reflectorContains(r, hit)) continue;
+            ++taken;
+            const float h = glm::dot(p - leader.center, up), e = glm::dot(eye - leader.center, up), span = h + e;
+            const vec3 mirrored = p - 2.0f * h * up, leaderHit = glm::mix(eye, mirrored, e / span);
+            farOff += std::abs(leaderHit.x - hit.x) > 0.1f;  // more than a cell away
+            const float margin = ppr::gpu::pprPlaneGridLookupMargin(p, eye, leader.center, mirrored, span);
+            EXPECT_TRUE(ppr::gpu::pprPlaneGridRangesMeet(ppr::gpu::pprPlaneGridCellsAround(g, leaderHit, margin), cells))
+                << "x " << x << " height " << height << ": own hit " << hit.x << ", leader's " << leaderHit.x << ", margin " << margin;
+        }
+    EXPECT_GT(taken, 100);
+    EXPECT_GT(farOff, 10) << "the case should move hits by more than a cell";
 }
 
 // Where a cell boundary runs along a rectangle's edge, rounding puts hits just beyond the edge that
