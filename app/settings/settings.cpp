@@ -151,7 +151,7 @@ const std::vector<SettingDecl>& settingDecls() {
                "PPR's reflection pass and the SSR techniques dispatched indirectly over the tile lists (0: whole screen)"),
         widthSetting("classify_threads", "tiles", [](FrameSettings& s) -> uint32_t& { return s.tiles.classifyThreads; },
                      passes::kClassifyThreadChoices,
-                     "tile classification: invocations per 16x16 tile (auto: 16 on a CPU device, 64 on a GPU); the same "
+                     "tile classification: invocations per 16x16 tile (auto: 1 on a CPU device, 64 on a GPU); the same "
                      "tile classes with any"),
         choice<PprFallback>("fallback", "ppr", [](FrameSettings& s) -> PprFallback& { return s.ppr.fallback; }, {"ssr", "none", "ssr_holes"},
                             "ssr_holes",

@@ -6,6 +6,6 @@
 
 namespace ppr::passes {
 
-inline constexpr std::array<uint32_t, 3> kClassifyThreadChoices{16, 64, 256};
+inline constexpr std::array<uint32_t, 3> kClassifyThreadChoices{1, 16, 64};
 
 }  // namespace ppr::passes

@@ -1,36 +1,40 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#extension GL_KHR_shader_subgroup_basic : require
-#extension GL_KHR_shader_subgroup_arithmetic : require
 #include "common/bindings.glsl"
 #include "ppr_common/tiles.h"
 #include "tile_classify/tile_classify.h"
 
-// One workgroup per screen tile: does the tile hold reflector-rectangle pixels (PPR's work), other
-// reflective pixels (a screen-space fallback's), or neither? Appends the tile to each list it
-// belongs to and counts it in that list's indirect dispatch arguments (Stachowiak 2015).
-// kThreads invocations (a specialization constant, by device: tile_classify.h) look at every
-// kThreads-th pixel of the tile; each subgroup then adds its answer with one shared atomic. One
-// invocation per pixel cost 3.4x as much on lavapipe: 256 invocations' scheduling and barriers.
-layout(local_size_x_id = 0) in;
-layout(constant_id = 0) const uint kThreads = kTileClassifyThreads;  // TileClassifyPass always specialises it
+// Per screen tile: does it hold reflector-rectangle pixels (PPR's work), other reflective pixels (a
+// screen-space fallback's), or neither? Appends the tile to each list it belongs to and counts it in
+// that list's indirect dispatch arguments (Stachowiak 2015). kLanes invocations per tile (a
+// specialization constant, by device: tile_classify.h), kTileClassifyGroupSize / kLanes tiles per
+// workgroup, the tiles in row order (the workgroups too, in rows of kTileClassifyGroupsPerRow), as
+// the reach pass lays them out. With one lane per tile (a CPU device: lanes are SIMD lanes over
+// neighbouring tiles) there is no barrier and no shared memory; with several, they look at every
+// kLanes-th 2x2 quad and add their answers with one shared atomic each.
+layout(local_size_x = kTileClassifyGroupSize) in;
+layout(constant_id = 0) const uint kLanes = kTileClassifyThreads;  // TileClassifyPass always specialises it
 layout(set = 0, binding = 1) uniform usampler2D reflectorTex;
 layout(set = 0, binding = 2) uniform sampler2D materialTex;
 layout(set = 0, binding = 3, scalar) buffer Args { TileDispatchArgs args[]; };
 layout(set = 0, binding = 4, scalar) writeonly buffer Lists { uint tiles[]; };
 layout(push_constant, scalar) uniform Push { TileClassifyPush pc; };
 
-shared uint classBits;
+const uint kTilesPerGroup = kTileClassifyGroupSize / kLanes;
+shared uint classBits[kTilesPerGroup];
 
 void main() {
-    if (gl_LocalInvocationIndex == 0u) classBits = 0u;
-    barrier();
+    uint lid = gl_LocalInvocationIndex, slot = lid / kLanes, lane = lid % kLanes;
+    uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;  // rows of workgroups (TileClassifyPass)
+    uint index = group * kTilesPerGroup + slot;
+    bool inside = index < pc.tileCount;
+    uvec2 tile = uvec2(index % pc.tilesX, index / pc.tilesX);
     uint bits = 0u;
-    ivec2 origin = ivec2(gl_WorkGroupID.xy) * int(kPprTileSize);
+    ivec2 origin = ivec2(tile) * int(kPprTileSize);
     // 2x2 pixel quads: one gather per texture reads four pixels. Beyond the screen's last row or
     // column the clamp-to-edge sampler repeats that row or column, which lies in this same tile.
     const uint quadsPerRow = kPprTileSize / 2u;
-    for (uint i = gl_LocalInvocationIndex; i < quadsPerRow * quadsPerRow; i += kThreads) {
+    for (uint i = lane; inside && i < quadsPerRow * quadsPerRow; i += kLanes) {
         ivec2 pix = origin + 2 * ivec2(i % quadsPerRow, i / quadsPerRow);
         if (any(greaterThanEqual(pix, ivec2(frame.screenSize)))) continue;
         vec2 corner = vec2(pix + 1) * frame.invScreenSize;  // the quad's shared corner
@@ -40,15 +44,15 @@ void main() {
         if (any(lessThan(ids - 1u, uvec4(pc.maxReflectorId)))) bits |= 1u << kTileClassPlanar;
         if (any(greaterThan(mix(vec4(0.0), reflective, equal(ids, uvec4(0u))), vec4(0.5)))) bits |= 1u << kTileClassOther;
     }
-    bits = subgroupOr(bits);
-    if (subgroupElect() && bits != 0u) atomicOr(classBits, bits);
-    barrier();
-    if (gl_LocalInvocationIndex != 0u) return;
-    uint packed = pprPackTile(gl_WorkGroupID.xy);
-    if ((classBits & (1u << kTileClassPlanar)) != 0u) {
-        tiles[kTileClassPlanar * pc.tileCount + atomicAdd(args[kTileClassPlanar].x, 1u)] = packed;
+    if (kLanes > 1u) {  // a specialization constant: uniform
+        if (lane == 0u) classBits[slot] = 0u;
+        barrier();
+        if (bits != 0u) atomicOr(classBits[slot], bits);
+        barrier();
+        bits = classBits[slot];
     }
-    if ((classBits & (1u << kTileClassOther)) != 0u) {
-        tiles[kTileClassOther * pc.tileCount + atomicAdd(args[kTileClassOther].x, 1u)] = packed;
-    }
+    if (lane != 0u || !inside) return;
+    uint packed = pprPackTile(tile);
+    if ((bits & (1u << kTileClassPlanar)) != 0u) tiles[kTileClassPlanar * pc.tileCount + atomicAdd(args[kTileClassPlanar].x, 1u)] = packed;
+    if ((bits & (1u << kTileClassOther)) != 0u) tiles[kTileClassOther * pc.tileCount + atomicAdd(args[kTileClassOther].x, 1u)] = packed;
 }

@@ -101,7 +101,7 @@ TEST(Settings, RejectsBadValuesNamingKeyAndWhatIsAccepted) {
     expectRejected("glass_atlas=", "expected a whole number");
     expectRejected("exposure=1x", "expected a number");
     expectRejected("project_threads=48", "project_threads=48: expected one of auto|32|64|128|256");
-    expectRejected("classify_threads=32", "classify_threads=32: expected one of auto|16|64|256");
+    expectRejected("classify_threads=32", "classify_threads=32: expected one of auto|1|16|64");
     expectRejected("novalue", "expected key=value");
     expectRejected("=1", "expected key=value");
 }
