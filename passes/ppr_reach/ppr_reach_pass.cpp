@@ -1,11 +1,11 @@
 #include "ppr_reach/ppr_reach_pass.hpp"
 
 #include "common/compute_pass.hpp"
+#include "common/tile_group_grid.hpp"
 #include "ppr_common/tiles.h"
 #include "ppr_reach/ppr_reach.h"
 #include "ppr_reach_comp.h"
 
-#include <algorithm>
 
 namespace ppr::passes {
 
@@ -15,15 +15,6 @@ constexpr WorkgroupWidths kWidths{kReachThreadChoices, gpu::kPprReachThreads, gp
 static_assert(kWidths.valid(gpu::kPprTileSize * gpu::kPprTileSize, 1u) && gpu::kPprReachGroupSize % kReachThreadChoices.back() == 0,
               "ppr.reach's invocations per tile must divide the tile and the workgroup and hold the defaults");
 
-// The workgroups, in rows of at most kPprReachGroupsPerRow (a 4096² frame at 64 invocations per tile
-// needs 65 536, beyond the 65 535 per dimension every device offers), as the extent to cover in
-// groups of kPprReachGroupSize.
-VkExtent2D groupGrid(uint32_t tileCount, uint32_t lanes) {
-    const uint32_t groups = (tileCount * lanes + gpu::kPprReachGroupSize - 1) / gpu::kPprReachGroupSize;
-    const uint32_t perRow = std::min(groups, gpu::kPprReachGroupsPerRow);
-    const uint32_t rows = (groups + perRow - 1) / perRow;
-    return {perRow * gpu::kPprReachGroupSize, rows * gpu::kPprReachGroupSize};
-}
 
 shader::PipelineLayoutDesc reachLayout() {
     shader::PipelineLayoutDesc layout;
@@ -71,7 +62,7 @@ PprTileList PprReachPass::add(graph::RenderGraph& g, const FrameInputs& in, cons
         .storageReadWrite(inputs.stats, &out.stats)
         .storageRead(inputs.visible)
         .push(push)
-        .dispatch(groupGrid(tileCount, lanes), gpu::kPprReachGroupSize);
+        .dispatch(tileGroupGrid(tileCount, lanes, gpu::kPprReachGroupSize, gpu::kPprReachGroupsPerRow), gpu::kPprReachGroupSize);
     return out;
 }
 

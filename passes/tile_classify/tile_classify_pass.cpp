@@ -1,11 +1,11 @@
 #include "tile_classify/tile_classify_pass.hpp"
 
 #include "common/compute_pass.hpp"
+#include "common/tile_group_grid.hpp"
 #include "ppr_common/tiles.h"
 #include "tile_classify/tile_classify.h"
 #include "tile_classify_comp.h"
 
-#include <algorithm>
 #include <array>
 #include <cstddef>
 
@@ -17,15 +17,6 @@ constexpr WorkgroupWidths kWidths{kClassifyThreadChoices, gpu::kTileClassifyThre
 static_assert(kWidths.valid(gpu::kPprTileSize * gpu::kPprTileSize / 4u, 1u) && gpu::kTileClassifyGroupSize % kClassifyThreadChoices.back() == 0,
               "tiles.classify's invocations per tile must divide the tile's quads and the workgroup and hold the defaults");
 
-// The workgroups, in rows of at most kTileClassifyGroupsPerRow (a 4096² frame at one invocation per
-// tile needs 1 024; at 64, 65 536: beyond the 65 535 per dimension every device offers), as the extent
-// to cover in groups of kTileClassifyGroupSize.
-VkExtent2D groupGrid(uint32_t tileCount, uint32_t lanes) {
-    const uint32_t groups = (tileCount * lanes + gpu::kTileClassifyGroupSize - 1) / gpu::kTileClassifyGroupSize;
-    const uint32_t perRow = std::min(groups, gpu::kTileClassifyGroupsPerRow);
-    const uint32_t rows = (groups + perRow - 1) / perRow;
-    return {perRow * gpu::kTileClassifyGroupSize, rows * gpu::kTileClassifyGroupSize};
-}
 
 shader::PipelineLayoutDesc classifyLayout() {
     shader::PipelineLayoutDesc layout;
@@ -76,7 +67,8 @@ TileLists TileClassifyPass::add(graph::RenderGraph& g, const FrameInputs& in, co
         .storageReadWrite(clearedArgs, &t.args)
         .storageWrite(lists, &t.lists)
         .push(push)
-        .dispatch(groupGrid(t.tileCount(), pipelines_.resolve(threads)), gpu::kTileClassifyGroupSize);
+        .dispatch(tileGroupGrid(t.tileCount(), pipelines_.resolve(threads), gpu::kTileClassifyGroupSize, gpu::kTileClassifyGroupsPerRow),
+                  gpu::kTileClassifyGroupSize);
 
     // The arguments as the dispatches will read them, into the host-visible stats.
     struct Count {
