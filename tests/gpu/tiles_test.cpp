@@ -248,16 +248,25 @@ TEST(PprTiles, ProjectionRunsOnlyWhereAReflectorCanBeReached) {
 // PPR's largest frame (4096² = 65 536 tiles) at one workgroup per tile needs more workgroups than a
 // dispatch row holds on every device: the reach pass lays them out in rows and still lists exactly
 // the tiles with survivors.
+// Classification lays its workgroups out in rows the same way (tileGroupGrid): at its widest it
+// finds the same tiles as at one invocation per tile.
 TEST(PprTiles, ReachCoversTheLargestFrameAtOneTilePerWorkgroup) {
     GpuFixture f;
     f.headless->setTechnique("ppr");
     f.headless->settings().set("reach_threads", std::to_string(passes::kReachThreadChoices.back()));
+    f.headless->settings().set("classify_threads", std::to_string(passes::kClassifyThreadChoices.back()));
     const app::CaptureResult r = f.headless->capture(f.camera("overview"), {gpu::kPprMaxExtent, gpu::kPprMaxExtent}, 1, false, false);
     ASSERT_TRUE(r.pprStats);
     std::printf("4096x4096: %u with content, %u with survivors, %u projected\n", r.pprStats->tilesWithContent, r.pprStats->tilesWithSurvivors,
                 r.pprStats->tilesProjected);
     EXPECT_GT(r.pprStats->tilesWithSurvivors, 0u);
     EXPECT_EQ(r.pprStats->tilesProjected, r.pprStats->tilesWithSurvivors);
+    f.headless->settings().set("classify_threads", std::to_string(passes::kClassifyThreadChoices.front()));
+    const app::CaptureResult narrow = f.headless->capture(f.camera("overview"), {gpu::kPprMaxExtent, gpu::kPprMaxExtent}, 1, false, false);
+    ASSERT_TRUE(narrow.pprStats);
+    for (uint32_t c = 0; c < gpu::kTileClassCount; ++c)
+        EXPECT_EQ(r.pprStats->dispatch[c].x, narrow.pprStats->dispatch[c].x) << "tile class " << c;
+    EXPECT_GT(r.pprStats->dispatch[gpu::kTileClassPlanar].x, 0u);
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
 
