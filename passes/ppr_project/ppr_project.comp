@@ -18,10 +18,12 @@
 // reach pass listed (ppr_reach.comp: the rest would keep no reflector). Each invocation reconstructs
 // the world positions of its pixels once, keeps them in registers and reduces their bounds (one
 // shared atomic per subgroup and value). With culling on, the workgroup then tests every reflector
-// against the tile's bounds in parallel (ppr_common/tile_culling.h) and keeps, in shared memory and
-// in projection order, the survivors and the possible occluders; each pixel then runs the
-// per-reflector logic over those lists only. The tests run over the frame's reflectors on screen
-// (the bounds pass's lists), not over all of them. With culling off the lists are all reflectors.
+// against the tile's bounds in parallel (ppr_common/tile_culling.h), skipping runs of them whose
+// summary rules them out, and keeps, in shared memory and in projection order, the survivors and the
+// possible occluders; each pixel then runs the per-reflector logic over those lists only, or, where
+// the survivors share one plane, over those of its cells in a grid over that plane
+// (ppr_common/plane_grid.h). The tests run over the frame's reflectors on screen (the bounds pass's
+// lists), not over all of them. With culling off the lists are all reflectors.
 // kThreads invocations per tile, each projecting every kThreads-th pixel: a specialization constant
 // (--set project_threads), since the best count depends on the device (ppr_project.h).
 layout(local_size_x_id = 0) in;
