@@ -24,13 +24,23 @@ layout(set = 0, binding = 5, scalar) buffer Stats { PprFrameStats stats; };
 layout(push_constant, scalar) uniform Push { PprBoundsPush pc; };
 
 shared uint counts[kPprBoundsGroupSize];  // per run: reflecting (low 16 bits) and on screen (high 16)
-// Per culling chunk, reduced with atomics: rectangle corners, box corners as order-preserving uints, planes.
-shared uint chunkLoX[kPprCullChunkCount], chunkLoY[kPprCullChunkCount], chunkHiX[kPprCullChunkCount], chunkHiY[kPprCullChunkCount];
-shared uvec3 chunkBoxLo[kPprCullChunkCount], chunkBoxHi[kPprCullChunkCount];
-shared uint chunkPlaneLo[kPprCullChunkCount], chunkPlaneHi[kPprCullChunkCount];
-// The same for the on-screen list's runs (no boxes), and 1 while every reflector of the run is glass.
-shared uint seenLoX[kPprCullChunkCount], seenLoY[kPprCullChunkCount], seenHiX[kPprCullChunkCount], seenHiY[kPprCullChunkCount];
-shared uint seenPlaneLo[kPprCullChunkCount], seenPlaneHi[kPprCullChunkCount], seenGlass[kPprCullChunkCount];
+// The run summaries, reduced with atomics, one slot per run of each list as cullChunks holds them
+// (the candidates' runs, then the on-screen list's): rectangle corners, box corners as
+// order-preserving uints (candidates only), planes, and 1 while every reflector of the run is glass.
+const uint kSummaries = 2u * kPprCullChunkCount;
+shared uint sumLoX[kSummaries], sumLoY[kSummaries], sumHiX[kSummaries], sumHiY[kSummaries];
+shared uvec3 sumBoxLo[kPprCullChunkCount], sumBoxHi[kPprCullChunkCount];
+shared uint sumPlaneLo[kSummaries], sumPlaneHi[kSummaries], sumGlass[kSummaries];
+
+void addToSummary(uint slot, uvec2 rect, ReflectorData reflector) {
+    atomicMin(sumLoX[slot], rect.x & 0xFFFFu);
+    atomicMin(sumLoY[slot], rect.x >> 16u);
+    atomicMax(sumHiX[slot], rect.y & 0xFFFFu);
+    atomicMax(sumHiY[slot], rect.y >> 16u);
+    atomicMin(sumPlaneLo[slot], reflector.cullPlane);
+    atomicMax(sumPlaneHi[slot], reflector.cullPlane);
+    if (reflector.kind != kReflectorGlass) atomicAnd(sumGlass[slot], 0u);
+}
 
 void main() {
     uint lid = gl_LocalInvocationIndex;
@@ -49,14 +59,14 @@ void main() {
     }
     uint mine = bitCount(reflecting) | (bitCount(onScreen) << 16u);  // ≤ kPprMaxReflectors each: no carry
     counts[lid] = mine;
-    for (uint c = lid; c < kPprCullChunkCount; c += kPprBoundsGroupSize) {
-        chunkLoX[c] = chunkLoY[c] = chunkPlaneLo[c] = 0xFFFFFFFFu;
-        chunkHiX[c] = chunkHiY[c] = chunkPlaneHi[c] = 0u;
-        chunkBoxLo[c] = uvec3(0xFFFFFFFFu);
-        chunkBoxHi[c] = uvec3(0u);
-        seenLoX[c] = seenLoY[c] = seenPlaneLo[c] = 0xFFFFFFFFu;
-        seenHiX[c] = seenHiY[c] = seenPlaneHi[c] = 0u;
-        seenGlass[c] = 1u;
+    for (uint c = lid; c < kSummaries; c += kPprBoundsGroupSize) {
+        sumLoX[c] = sumLoY[c] = sumPlaneLo[c] = 0xFFFFFFFFu;
+        sumHiX[c] = sumHiY[c] = sumPlaneHi[c] = 0u;
+        sumGlass[c] = 1u;
+        if (c < kPprCullChunkCount) {
+            sumBoxLo[c] = uvec3(0xFFFFFFFFu);
+            sumBoxHi[c] = uvec3(0u);
+        }
     }
     barrier();
     // Inclusive scan of the runs' counts (Hillis–Steele: log2 of the group size steps).
@@ -75,52 +85,34 @@ void main() {
         uvec2 rect = rects[k - first];
         if ((reflecting & bit) != 0u) {
             uint c = r / kPprCullChunk;
+            addToSummary(c, rect, reflector);
             vec3 lo, hi;
             pprRectangleBox(reflector, lo, hi);
-            atomicMin(chunkLoX[c], rect.x & 0xFFFFu);
-            atomicMin(chunkLoY[c], rect.x >> 16u);
-            atomicMax(chunkHiX[c], rect.y & 0xFFFFu);
-            atomicMax(chunkHiY[c], rect.y >> 16u);
             uvec3 l = orderedFromFloat(lo - vec3(kPprCullSlack)), h = orderedFromFloat(hi + vec3(kPprCullSlack));
-            atomicMin(chunkBoxLo[c].x, l.x);
-            atomicMin(chunkBoxLo[c].y, l.y);
-            atomicMin(chunkBoxLo[c].z, l.z);
-            atomicMax(chunkBoxHi[c].x, h.x);
-            atomicMax(chunkBoxHi[c].y, h.y);
-            atomicMax(chunkBoxHi[c].z, h.z);
-            atomicMin(chunkPlaneLo[c], reflector.cullPlane);
-            atomicMax(chunkPlaneHi[c], reflector.cullPlane);
+            atomicMin(sumBoxLo[c].x, l.x);
+            atomicMin(sumBoxLo[c].y, l.y);
+            atomicMin(sumBoxLo[c].z, l.z);
+            atomicMax(sumBoxHi[c].x, h.x);
+            atomicMax(sumBoxHi[c].y, h.y);
+            atomicMax(sumBoxHi[c].z, h.z);
             visibleLists[r++] = i;
         }
-        uint c = s / kPprCullChunk;
-        atomicMin(seenLoX[c], rect.x & 0xFFFFu);
-        atomicMin(seenLoY[c], rect.x >> 16u);
-        atomicMax(seenHiX[c], rect.y & 0xFFFFu);
-        atomicMax(seenHiY[c], rect.y >> 16u);
-        atomicMin(seenPlaneLo[c], reflector.cullPlane);
-        atomicMax(seenPlaneHi[c], reflector.cullPlane);
-        if (reflector.kind != kReflectorGlass) atomicAnd(seenGlass[c], 0u);
+        addToSummary(kPprCullChunkCount + s / kPprCullChunk, rect, reflector);
         visibleLists[pc.reflectorCount + s++] = i;
     }
     barrier();
     uint total = counts[kPprBoundsGroupSize - 1u];
-    for (uint c = lid; c * kPprCullChunk < (total & 0xFFFFu); c += kPprBoundsGroupSize) {
+    for (uint slot = lid; slot < kSummaries; slot += kPprBoundsGroupSize) {
+        bool candidates = slot < kPprCullChunkCount;
+        uint c = candidates ? slot : slot - kPprCullChunkCount, listed = candidates ? total & 0xFFFFu : total >> 16u;
+        if (c * kPprCullChunk >= listed) continue;  // beyond the list: never read
         PprCullChunk chunk;
-        chunk.rect = uvec2(chunkLoX[c] | (chunkLoY[c] << 16u), chunkHiX[c] | (chunkHiY[c] << 16u));
-        chunk.boxLo = floatFromOrdered(chunkBoxLo[c]);
-        chunk.boxHi = floatFromOrdered(chunkBoxHi[c]);
-        chunk.cullPlane = chunkPlaneLo[c] == chunkPlaneHi[c] ? chunkPlaneLo[c] : kPprNoCullPlane;
-        chunk.allGlass = 0u;
-        cullChunks[c] = chunk;
-    }
-    for (uint c = lid; c * kPprCullChunk < (total >> 16u); c += kPprBoundsGroupSize) {
-        PprCullChunk chunk;
-        chunk.rect = uvec2(seenLoX[c] | (seenLoY[c] << 16u), seenHiX[c] | (seenHiY[c] << 16u));
-        chunk.boxLo = vec3(0.0);
-        chunk.boxHi = vec3(0.0);
-        chunk.cullPlane = seenPlaneLo[c] == seenPlaneHi[c] ? seenPlaneLo[c] : kPprNoCullPlane;
-        chunk.allGlass = seenGlass[c];
-        cullChunks[kPprCullChunkCount + c] = chunk;
+        chunk.rect = uvec2(sumLoX[slot] | (sumLoY[slot] << 16u), sumHiX[slot] | (sumHiY[slot] << 16u));
+        chunk.boxLo = candidates ? floatFromOrdered(sumBoxLo[c]) : vec3(0.0);
+        chunk.boxHi = candidates ? floatFromOrdered(sumBoxHi[c]) : vec3(0.0);
+        chunk.cullPlane = sumPlaneLo[slot] == sumPlaneHi[slot] ? sumPlaneLo[slot] : kPprNoCullPlane;
+        chunk.allGlass = candidates ? 0u : sumGlass[slot];
+        cullChunks[slot] = chunk;
     }
     if (lid == kPprBoundsGroupSize - 1u) {
         visibleCounts = PprVisibleCounts(total & 0xFFFFu, total >> 16u, 0u, 0u);
