@@ -38,6 +38,7 @@ struct PprSettings {         // owner: ppr
     PprFallback fallback;
     NormalMap normalMap;     // the bonus slides' normal-map approximation in the reflection pass
     bool normalRefine;       // raymarch: find where the ray crosses the depth buffer
+    bool contact;            // holes=1: march toward the reflected point for what the main view hides
 };
 struct SsrSettings {         // owner: ssr (the four ssr-* techniques and PPR's fallback)
     float distance, thickness, thicknessScale;

@@ -166,6 +166,9 @@ const std::vector<SettingDecl>& settingDecls() {
         toggle("normal_refine", "ppr", [](FrameSettings& s) -> bool& { return s.ppr.normalRefine; }, true,
                "normalmap=raymarch: find where the ray crosses the depth buffer (bisect after a hidden tap, walk on past "
                "an approximated point that is not hidden; 0: the slides' 4 taps alone)"),
+        toggle("contact", "ppr", [](FrameSettings& s) -> bool& { return s.ppr.contact; }, true,
+               "holes=1: 4 depth-tested taps (2, 4, 8, 16 px) from each reflector pixel toward the point it reflects find "
+               "what the main view hides in between, such as the underside of an object standing on the reflector (0: off)"),
         toggle("fallback_env", "env", [](FrameSettings& s) -> bool& { return s.env.fallback; }, false,
                "reflections that leave the screen or find nothing show the environment (env_source), blended in near the screen edges (0: black)"),
         choice<EnvSource>("env_source", "env", [](FrameSettings& s) -> EnvSource& { return s.env.source; }, {"sky", "probe"}, "probe",

@@ -10,7 +10,8 @@
 #include "ppr_reflect/ppr_reflect.h"
 
 // PPR step 3, the reflection pass: resolves each reflector pixel (ppr_common/ppr_resolve.glsl: decode,
-// hole filling, filtered sample, anti-bleeding) into the reflection image (common/reflection.h).
+// hole filling, filtered sample, anti-bleeding), then what the flat data cannot show: the rim, the
+// contact march, the normal map, the environment, into the reflection image (common/reflection.h).
 // Dispatched over the whole screen or, indirectly, over the tiles that hold reflector pixels (the
 // image is cleared first).
 layout(local_size_x = kPprTileSize, local_size_y = kPprTileSize) in;
@@ -172,6 +173,83 @@ bool rimContinuation(ivec2 pix, uint id, out vec2 source) {
     return found;
 }
 
+// The reflected ray in clip space, where it is linear: clip(t) = origin + t * direction.
+struct ClipRay {
+    vec4 origin, direction;
+};
+
+// The point `along` the ray (metres): 0 in front of the depth buffer or off screen, 1 behind it
+// within the thickness (a hit), 2 behind it farther than that. Behind means behind all four depth
+// texels around the point: one pixel centre on an object next to its outline is not enough (the ray
+// may pass over a ledge within that pixel).
+uint contactTest(ClipRay ray, float along, out vec2 x) {
+    vec4 h = ray.origin + along * ray.direction;
+    float rayW = h.w;
+    x = (h.xy / h.w * 0.5 + 0.5) * frame.screenSize;
+    if (h.w <= frame.cameraPos.w || any(lessThan(x, vec2(0.0))) || any(greaterThanEqual(x, frame.screenSize))) return 0u;
+    // In front of the texel under the point (most taps): in front of the farthest of the four too.
+    float near = frame.cameraPos.w;  // view distance = near / depth
+    float under = texelFetch(depthTex, ivec2(x), 0).r;
+    if (under <= 0.0 || rayW <= near / under * 1.001) return 0u;
+    vec4 depths = textureGather(depthTex, x * frame.invScreenSize, 0);
+    float farthest = min(min(depths.x, depths.y), min(depths.z, depths.w)), nearest = max(max(depths.x, depths.y), max(depths.z, depths.w));
+    if (farthest <= 0.0) return 0u;
+    float farW = near / farthest, nearW = near / nearest;
+    if (rayW <= farW * 1.001) return 0u;
+    return rayW <= nearW + kPprContactThickness + kPprContactThicknessScale * nearW ? 1u : 2u;
+}
+
+// contact=1: the reflected ray from this pixel's surface toward the point its data reflects (seen at
+// `source`), marched from the pixel: kPprContactTaps taps, kPprContactFirstTap screen pixels away
+// and doubling. The main view cannot show what the ray meets first if that is hidden there (the
+// underside of an object standing on the reflector). The nearest tap where the ray lies behind the
+// depth buffer within the SSR thickness has hit that object; a tap behind it by more than that is
+// refined by bisection toward where the ray went behind it, which may be within the thickness. The
+// reflection shows what the depth buffer shows there. The taps are spaced by the screen segment to
+// the source (where 1 / view distance is linear) but lie on the exact reflected ray: at a grazing
+// angle a point of the pixel-centred segment can be a centimetre off the ray, inside a ledge the ray
+// passes over.
+bool contactHit(ivec2 pix, vec3 surface, vec3 dir, vec2 source, out vec2 hitPixel) {
+    vec2 from = vec2(pix) + 0.5;
+    float len = distance(source, from);
+    if (len < 2.0 * kPprContactFirstTap) return false;
+    ivec2 sourcePix = clamp(ivec2(source), ivec2(0), ivec2(frame.screenSize) - 1);
+    float sourceDepth = texelFetch(depthTex, sourcePix, 0).r;
+    float near = frame.cameraPos.w;
+    float invFrom = texelFetch(depthTex, pix, 0).r / near, invTo = sourceDepth / near;
+    // Sky: the ray's length to it is unknown; march the first metres of it.
+    float reach = sourceDepth > 0.0 ? distance(surface, worldFromDepth((vec2(sourcePix) + 0.5) * frame.invScreenSize, sourceDepth)) : 1.0 / invFrom;
+    ClipRay ray = ClipRay(frame.viewProj * vec4(surface, 1.0), frame.viewProj * vec4(dir, 0.0));
+    float tap = kPprContactFirstTap, visible = 0.0;
+    for (uint k = 0u; k < kPprContactTaps && tap < len; ++k, tap *= 2.0) {
+        float f = tap / len;
+        float along = (sourceDepth > 0.0 ? f * invTo / mix(invFrom, invTo, f) : f) * reach;  // perspective-correct
+        vec2 x;
+        uint t = contactTest(ray, along, x);
+        if (t == 1u) {
+            hitPixel = floor(x) + 0.5;
+            return true;
+        }
+        if (t == 0u) {
+            visible = along;
+            continue;
+        }
+        float hidden = along;
+        for (uint i = 0u; i < kPprContactRefineSteps; ++i) {
+            float mid = 0.5 * (visible + hidden);
+            uint m = contactTest(ray, mid, x);
+            if (m == 1u) {
+                hitPixel = floor(x) + 0.5;
+                return true;
+            }
+            if (m == 0u) visible = mid;
+            else hidden = mid;
+        }
+        visible = along;
+    }
+    return false;
+}
+
 vec3 hue(float angle) { return clamp(abs(fract(angle + vec3(0.0, 2.0 / 3.0, 1.0 / 3.0)) * 6.0 - 3.0) - 1.0, 0.0, 1.0); }
 
 // Heat map of reflectors surviving per-tile culling: blue (1) → green → yellow → red (64 and more).
@@ -219,20 +297,29 @@ void main() {
         r.source = rim;
         r.readTexel = ivec2(rim);  // not this pixel's data: marked hole-filled
     }
+    const uint normalModes = kPprNormalApprox | kPprNormalRaymarch;
+    vec3 surface = (pc.flags & (normalModes | kPprEnvironment | kPprContactMarch)) != 0u
+                       ? worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, texelFetch(depthTex, pix, 0).r)
+                       : vec3(0.0);
+    vec3 flatNormal = reflectors[id - 1u].normal;
+    vec2 contact;
+    bool contacted = r.valid && (pc.flags & kPprContactMarch) != 0u &&
+                     contactHit(pix, surface, reflect(normalize(surface - frame.cameraPos.xyz), flatNormal), r.source, contact);
+    if (contacted) {
+        r.color = textureLod(scenePoint, contact * frame.invScreenSize, 0.0).rgb;
+        r.source = contact;
+    }
     if ((pc.flags & kPprWriteDistance) != 0u && r.valid && pc.debugView == kDebugNone) storeDistance(pix, r.source);
-    if (pc.debugView == kDebugHoles) {
-        vec3 c = !r.valid ? vec3(1.0, 0.0, 0.0) : r.readTexel == pix ? vec3(0.0, 0.8, 0.0) : vec3(1.0, 0.85, 0.0);
+    if (pc.debugView == kDebugHoles) {  // red: none; green: own data; yellow: a neighbour's; blue: the contact march's
+        vec3 c = !r.valid ? vec3(1.0, 0.0, 0.0) : contacted ? vec3(0.1, 0.4, 1.0) : r.readTexel == pix ? vec3(0.0, 0.8, 0.0) : vec3(1.0, 0.85, 0.0);
         imageStore(outReflection, pix, vec4(c, 1.0));
         return;
     }
-    const uint normalModes = kPprNormalApprox | kPprNormalRaymarch;
     if ((pc.flags & (normalModes | kPprEnvironment)) == 0u) {  // the slides' flat mirror, as it always was
         imageStore(outReflection, pix, r.valid ? vec4(r.color, r.readTexel == pix ? kReflectionHit : kReflectionFilled)
                                                : vec4(0.0, 0.0, 0.0, kReflectionNone));
         return;
     }
-    vec3 surface = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, texelFetch(depthTex, pix, 0).r);
-    vec3 flatNormal = reflectors[id - 1u].normal;
     vec3 n = flatNormal;
     if ((pc.flags & normalModes) != 0u) {
         vec3 mapped = normalize(texelFetch(normalTex, pix, 0).xyz);

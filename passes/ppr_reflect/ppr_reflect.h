@@ -22,6 +22,18 @@ PPR_CONST(uint, kPprHoleEnclosed, 256u)
 PPR_CONST(uint, kPprWriteDistance, 512u)
 // --set normal_refine=1: raymarch looks for where the ray crosses the depth buffer (ppr_reflect.comp).
 PPR_CONST(uint, kPprNormalRefine, 1024u)
+// --set contact=1 (with holes=1): a short march from each reflector pixel toward the point its data
+// reflects finds what the main view hides between them (an object's underside where it stands on the
+// reflector): kPprContactTaps taps, kPprContactFirstTap screen pixels from the pixel and doubling.
+PPR_CONST(uint, kPprContactMarch, 2048u)
+PPR_CONST(uint, kPprContactTaps, 4u)
+PPR_CONST(float, kPprContactFirstTap, 2.0f)
+// Bisection steps toward where the ray went behind a surface it lies too far behind at a tap.
+PPR_CONST(uint, kPprContactRefineSteps, 3u)
+// A tap hits when the ray lies behind the depth buffer by at most this (metres, plus the scale times
+// the surface's view distance): ssr-brute's default thickness.
+PPR_CONST(float, kPprContactThickness, 0.05f)
+PPR_CONST(float, kPprContactThicknessScale, 0.02f)
 // How far (texels) the depth-aware rule looks on each side for the enclosing nearer layer.
 PPR_CONST(int, kPprHoleReach, 2)
 // How far (texels) it looks for the far side of a magnified nearer layer around a texel with data.
