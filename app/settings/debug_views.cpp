@@ -16,7 +16,7 @@ const std::vector<DebugViewDecl>& debugViews() {
         {"depth", gpu::kDebugDepth, "composite", "reverse-Z depth (fourth root)"},
         {"shadow", gpu::kDebugShadow, "lighting", "shadow-map visibility of the sun (white = lit)"},
         {"intermediate", gpu::kDebugIntermediate, "ppr.reflect", "PPR's decoded intermediate buffer"},
-        {"holes", gpu::kDebugHoles, "ppr.reflect", "PPR's hole mask: own data / hole-filled / no data per reflector pixel"},
+        {"holes", gpu::kDebugHoles, "ppr.reflect", "PPR's hole mask per reflector pixel: own data (green) / hole-filled (yellow) / contact march (blue) / no data (red)"},
         {"tiles", gpu::kDebugTiles, "ppr.reflect", "reflectors surviving PPR's per-tile culling, as a heat map"},
         {"atlas", gpu::kDebugAtlas, "glass.atlas_view", "PPR's glass reflection atlas, fitted to the screen height"},
         {"motion", gpu::kDebugMotion, "composite",
