@@ -10,18 +10,20 @@
 #include "ppr_common/tile_culling.h"
 #include "ppr_common/tiles.h"
 #include "ppr_project/ppr_project.h"
+#include "ppr_reach/ppr_reach.h"
 #include "glass_forward/glass_forward.h"
 
-// PPR step 2, the projection pass: every pixel finds the reflectors that reflect it and scatters its
-// screen-space offset to where it appears in them, keeping the closest with imageAtomicMin.
-// One workgroup per screen tile: every tile, or with culling and indirect dispatch only the tiles the
-// reach pass listed (ppr_reach.comp: the rest would keep no reflector). Each invocation reconstructs
-// the world positions of its pixels once, keeps them in registers and reduces their bounds (one
-// shared atomic per subgroup and value). With culling on, the workgroup then tests every reflector
-// against the tile's bounds in parallel (ppr_common/tile_culling.h), skipping runs of them whose
-// summary rules them out, and keeps, in shared memory and in projection order, the survivors and the
-// possible occluders; each pixel then runs the per-reflector logic over those lists only, or, where
-// the survivors share one plane, over those of its cells in a grid over that plane
+// PPR step 2, the projection pass: every pixel finds the reflectors that reflect it and scatters
+// its screen-space offset to where it appears in them, keeping the closest with imageAtomicMin. One
+// workgroup per screen tile: every tile, or with culling and indirect dispatch only the tiles the
+// reach pass listed (ppr_reach.comp: the rest would keep no reflector). Each invocation
+// reconstructs the world positions of its pixels once and keeps them in registers; the tile's
+// bounds come with the reach pass's list, or without one are reduced here (one shared atomic per
+// subgroup and value). With culling on, the workgroup then tests every reflector against the tile's
+// bounds in parallel (ppr_common/tile_culling.h), skipping runs of them whose summary rules them
+// out, and keeps, in shared memory and in projection order, the survivors and the possible
+// occluders; each pixel then runs the per-reflector logic over those lists only, or, where the
+// survivors share one plane, over those of its cells in a grid over that plane
 // (ppr_common/plane_grid.h). The tests run over the frame's reflectors on screen (the bounds pass's
 // lists), not over all of them. With culling off the lists are all reflectors.
 // kThreads invocations per tile, each projecting every kThreads-th pixel: a specialization constant
@@ -40,7 +42,7 @@ layout(set = 0, binding = 8, scalar) readonly buffer PlaneLeaders { uint planeLe
 layout(set = 0, binding = 9, r32ui) uniform uimage2D glassAtlas;
 layout(set = 0, binding = 10, scalar) readonly buffer GlassRegions { GlassRegionData glassRegions[]; };  // per reflector
 layout(set = 0, binding = 11) uniform sampler2D normalTex;  // G-buffer normal (pc.facingOnly)
-layout(set = 0, binding = 12, scalar) readonly buffer ReachTiles { uint reachTiles[]; };  // pc.tileList: the tiles to project
+layout(set = 0, binding = 12, scalar) readonly buffer ReachTiles { PprReachedTile reachTiles[]; };  // pc.tileList: the tiles to project
 layout(set = 0, binding = 13, scalar) readonly buffer Visible { PPR_VISIBLE_REFLECTORS; };
 layout(push_constant, scalar) uniform Push { PprProjectPush pc; };
 
@@ -359,7 +361,11 @@ void projectPixel(ivec2 pix, vec3 p, uint candidates, uint occluders) {
 
 void main() {
     uint lid = gl_LocalInvocationIndex;
-    tile = pc.tileList != 0u ? pprUnpackTile(reachTiles[gl_WorkGroupID.x]) : gl_WorkGroupID.xy;
+    // Listed by the reach pass: the tile and its box, reduced there from the same positions.
+    bool listed = pc.tileList != 0u;  // uniform
+    PprReachedTile entry;
+    if (listed) entry = reachTiles[gl_WorkGroupID.x];
+    tile = listed ? pprUnpackTile(entry.lo.w) : gl_WorkGroupID.xy;
     if (lid == 0u) {
         boxLo = uvec3(0xFFFFFFFFu);
         boxHi = uvec3(0u);
@@ -374,7 +380,7 @@ void main() {
     if (pc.cullTiles != 0u)
         for (uint w = lid; w < kPprMaxReflectors / 2u; w += kThreads) survivorWords[w] = occluderWords[w] = 0u;
 
-    // Every pixel's world position, once, for the bounds and the projection.
+    // Every pixel's world position, once, for the bounds (unless listed) and the projection.
     vec4 points[kPixelsPerThread];  // xyz: world position; w: 1 with geometry, 0 for sky or off screen
     uvec3 lo = uvec3(0xFFFFFFFFu), hi = uvec3(0u);
     for (uint j = 0u; j < kPixelsPerThread; ++j) {
@@ -385,33 +391,42 @@ void main() {
         if (depth <= 0.0) continue;  // sky: no position to mirror
         vec3 p = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depth);
         points[j] = vec4(p, 1.0);
+        if (listed) continue;
         uvec3 ordered = orderedFromFloat(p);
         lo = min(lo, ordered);
         hi = max(hi, ordered);
     }
-    lo = subgroupMin(lo);
-    hi = subgroupMax(hi);
-    barrier();  // the shared state above is initialised
-    if (subgroupElect() && lo.x <= hi.x) {
-        atomicMin(boxLo.x, lo.x);
-        atomicMin(boxLo.y, lo.y);
-        atomicMin(boxLo.z, lo.z);
-        atomicMax(boxHi.x, hi.x);
-        atomicMax(boxHi.y, hi.y);
-        atomicMax(boxHi.z, hi.z);
+    if (listed) {
+        lo = entry.lo.xyz;
+        hi = entry.hi.xyz;
+        barrier();  // the shared state above is initialised
+    } else {
+        lo = subgroupMin(lo);
+        hi = subgroupMax(hi);
+        barrier();  // the shared state above is initialised
+        if (subgroupElect() && lo.x <= hi.x) {
+            atomicMin(boxLo.x, lo.x);
+            atomicMin(boxLo.y, lo.y);
+            atomicMin(boxLo.z, lo.z);
+            atomicMax(boxHi.x, hi.x);
+            atomicMax(boxHi.y, hi.y);
+            atomicMax(boxHi.z, hi.z);
+        }
+        barrier();
+        lo = boxLo;
+        hi = boxHi;
     }
-    barrier();
 
-    bool hasContent = boxLo.x <= boxHi.x;  // the same in every thread
+    bool hasContent = lo.x <= hi.x;  // the same in every thread
     uint candidates = hasContent ? pc.reflectorCount : 0u, occluders = candidates;
     if (pc.cullTiles != 0u) {
-        if (hasContent) cullReflectors(floatFromOrdered(boxLo), floatFromOrdered(boxHi));
+        if (hasContent) cullReflectors(floatFromOrdered(lo), floatFromOrdered(hi));
         candidates = survivorCount;
         occluders = occluderCount;
     }
     if (lid == 0u) {
         tileSurvivors[tile.y * pc.tilesX + tile.x] = candidates;
-        if (hasContent && pc.tileList == 0u) atomicAdd(stats.tilesWithContent, 1u);  // else the reach pass counted them
+        if (hasContent && !listed) atomicAdd(stats.tilesWithContent, 1u);  // else the reach pass counted them
         atomicAdd(stats.tilesProjected, 1u);
         if (candidates > 0u) atomicAdd(stats.tilesWithSurvivors, 1u);
         atomicAdd(stats.reflectorTilePairs, candidates);

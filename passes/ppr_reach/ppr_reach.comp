@@ -13,8 +13,8 @@
 // screen (the bounds pass's list): with up to kPprReachPerReflector of them reflector by reflector,
 // beyond that per cull plane against the union of the plane's rectangles. A tile that fails has no survivor in the projection's culling, so
 // it would write nothing there: the projection is not dispatched for it. The rest are listed, in no
-// particular order, for the projection's indirect dispatch. Left-out tiles get a survivor count of 0
-// (debug=tiles).
+// particular order and each with its box, for the projection's indirect dispatch and culling.
+// Left-out tiles get a survivor count of 0 (debug=tiles).
 // kLanes invocations per tile (a specialization constant, --set reach_threads: by device, ppr_reach.h),
 // kPprReachGroupSize / kLanes tiles per workgroup, the tiles in row order (the workgroups too, in
 // rows of kPprReachGroupsPerRow).
@@ -25,7 +25,7 @@ layout(set = 0, binding = 2, scalar) readonly buffer Reflectors { ReflectorData 
 layout(set = 0, binding = 3, scalar) readonly buffer Bounds { PprReflectorBounds bounds[]; };
 layout(set = 0, binding = 4, scalar) readonly buffer PlaneLeaders { uint planeLeaders[]; };
 layout(set = 0, binding = 5, scalar) buffer Args { TileDispatchArgs args; };
-layout(set = 0, binding = 6, scalar) writeonly buffer ReachTiles { uint reachTiles[]; };
+layout(set = 0, binding = 6, scalar) writeonly buffer ReachTiles { PprReachedTile reachTiles[]; };
 layout(set = 0, binding = 7, scalar) writeonly buffer TileSurvivors { uint tileSurvivors[]; };
 layout(set = 0, binding = 8, scalar) buffer Stats { PprFrameStats stats; };
 layout(set = 0, binding = 9, scalar) readonly buffer Visible { PPR_VISIBLE_REFLECTORS; };
@@ -114,7 +114,8 @@ void main() {
     if (visibleCounts.reflecting > kPprReachPerReflector) gatherPlaneRectangles();  // uniform: one value for all
     barrier();
 
-    // The box of the tile's points, exactly as the projection pass reduces it (the same positions).
+    // The box of the tile's points, from the positions the projection pass reconstructs: it culls
+    // with this box (listed below with the tile) and does not reduce its own.
     if (inside) {
         uvec3 lo = uvec3(0xFFFFFFFFu), hi = uvec3(0u);
         ivec2 origin = ivec2(tile) * int(kPprTileSize);
@@ -154,6 +155,6 @@ void main() {
     barrier();
     if (lane != 0u || !inside) return;
     if (hasContent) atomicAdd(stats.tilesWithContent, 1u);
-    if (tileReached[slot] != 0u) reachTiles[atomicAdd(args.x, 1u)] = pprPackTile(tile);
+    if (tileReached[slot] != 0u) reachTiles[atomicAdd(args.x, 1u)] = PprReachedTile(uvec4(tileLo[slot], pprPackTile(tile)), uvec4(tileHi[slot], 0u));
     else tileSurvivors[index] = 0u;
 }

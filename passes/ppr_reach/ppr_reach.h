@@ -27,7 +27,15 @@ struct PprReachPush {
     uint tilesX;
     uint tilesY;
 };
+// One entry of the reach pass's list: a tile the projection runs on, with the box of its points
+// (order-preserving uints, ppr_common/ordered_float.glsl) that the projection's culling starts from,
+// reduced here from the same positions the projection reconstructs, so it is not reduced twice.
+struct PprReachedTile {
+    uvec4 lo;  // xyz: the box's low corner; w: the tile (pprPackTile)
+    uvec4 hi;  // xyz: the box's high corner
+};
 PPR_END
 PPR_SIZE_CHECK(PprReachPush, 16);
+PPR_SIZE_CHECK(PprReachedTile, 32);
 
 #endif

@@ -57,7 +57,7 @@ PprTileList PprReachPass::add(graph::RenderGraph& g, const FrameInputs& in, cons
         .storageRead(inputs.bounds)
         .hostStorage(r.planeLeaders)
         .storageReadWrite(cleared.args, &out.args)
-        .storageWrite(g.createBuffer("ppr.reach.tiles", {sizeof(uint32_t) * tileCount}), &out.tiles)
+        .storageWrite(g.createBuffer("ppr.reach.tiles", {sizeof(gpu::PprReachedTile) * tileCount}), &out.tiles)
         .storageWrite(g.createBuffer("ppr.tile_survivors", {sizeof(uint32_t) * tileCount}), &out.tileSurvivors)
         .storageReadWrite(inputs.stats, &out.stats)
         .storageRead(inputs.visible)
