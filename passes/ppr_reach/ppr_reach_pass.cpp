@@ -6,7 +6,6 @@
 #include "ppr_reach/ppr_reach.h"
 #include "ppr_reach_comp.h"
 
-
 namespace ppr::passes {
 
 namespace {
@@ -14,7 +13,6 @@ constexpr WorkgroupWidths kWidths{kReachThreadChoices, gpu::kPprReachThreads, gp
 
 static_assert(kWidths.valid(gpu::kPprTileSize * gpu::kPprTileSize, 1u) && gpu::kPprReachGroupSize % kReachThreadChoices.back() == 0,
               "ppr.reach's invocations per tile must divide the tile and the workgroup and hold the defaults");
-
 
 shader::PipelineLayoutDesc reachLayout() {
     shader::PipelineLayoutDesc layout;

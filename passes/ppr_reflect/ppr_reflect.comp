@@ -51,12 +51,17 @@ uint fetchValue(ivec2 p) {
 
 bool environmentUsesProbe() { return (pc.flags & kPprEnvironmentProbe) != 0u; }
 
-// Projects a world point: pixel coordinates and its view distance (w); false behind the near plane.
+// Clip coordinates to pixel coordinates; false behind the near plane or off screen.
+bool screenFromClip(vec4 h, out vec2 pixel) {
+    pixel = (h.xy / h.w * 0.5 + 0.5) * frame.screenSize;
+    return h.w > frame.cameraPos.w && all(greaterThanEqual(pixel, vec2(0.0))) && all(lessThan(pixel, frame.screenSize));
+}
+
+// Projects a world point: pixel coordinates and its view distance (w); false as screenFromClip.
 bool projectToScreen(vec3 p, out vec2 pixel, out float w) {
     vec4 h = frame.viewProj * vec4(p, 1.0);
     w = h.w;
-    pixel = (h.xy / h.w * 0.5 + 0.5) * frame.screenSize;
-    return h.w > frame.cameraPos.w && all(greaterThanEqual(pixel, vec2(0.0))) && all(lessThan(pixel, frame.screenSize));
+    return screenFromClip(h, pixel);
 }
 
 // Whether the point `t` along the ray from `surface` is on screen and not behind the depth buffer.
@@ -185,8 +190,7 @@ struct ClipRay {
 uint contactTest(ClipRay ray, float along, out vec2 x) {
     vec4 h = ray.origin + along * ray.direction;
     float rayW = h.w;
-    x = (h.xy / h.w * 0.5 + 0.5) * frame.screenSize;
-    if (h.w <= frame.cameraPos.w || any(lessThan(x, vec2(0.0))) || any(greaterThanEqual(x, frame.screenSize))) return 0u;
+    if (!screenFromClip(h, x)) return 0u;
     // In front of the texel under the point (most taps): in front of the farthest of the four too.
     float near = frame.cameraPos.w;  // view distance = near / depth
     float under = texelFetch(depthTex, ivec2(x), 0).r;
