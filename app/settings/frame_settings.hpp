@@ -33,6 +33,7 @@ struct PprSettings {         // owner: ppr
     bool filter, antibleed;
     bool tiles;              // per-tile reflector culling in the projection
     bool facing;             // project only surfaces that face the mirrored eye
+    bool splat;              // magnified surfaces fill the cells between their pixels' landings
     uint32_t projectThreads; // the projection's invocations per tile (passes/ppr_project/project_threads.hpp); 0: auto
     uint32_t reachThreads;   // the reach pass's invocations per tile (passes/ppr_reach/reach_threads.hpp); 0: auto
     PprFallback fallback;

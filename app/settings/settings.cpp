@@ -135,6 +135,9 @@ const std::vector<SettingDecl>& settingDecls() {
         toggle("facing", "ppr", [](FrameSettings& s) -> bool& { return s.ppr.facing; }, true,
                "PPR projects only surfaces that face the mirrored eye (one seen from behind is hidden in the reflection by its "
                "object's front; 0: every surface, as the slides)"),
+        toggle("splat", "ppr", [](FrameSettings& s) -> bool& { return s.ppr.splat; }, true,
+               "PPR: a surface the reflection magnifies (seen at a grazing angle, reflected face on) also writes the pixels "
+               "between its pixels' landings, so what lies behind it does not show through (0: one pixel each, as the slides)"),
         toggle("filter", "ppr", [](FrameSettings& s) -> bool& { return s.ppr.filter; }, true,
                "PPR filtered (bilinear, encoded fractions) colour sample instead of point"),
         toggle("antibleed", "ppr", [](FrameSettings& s) -> bool& { return s.ppr.antibleed; }, true,

@@ -70,6 +70,7 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
     project.cullTiles = s.tiles;
     project.normal = f.gbuffer.normal;
     project.facingOnly = s.facing;
+    project.splat = s.splat;
     project.threads = s.projectThreads;
     // With culling and indirect dispatch, the projection runs only on the tiles that can be reflected.
     if (s.tiles && f.settings.tiles.indirect)

@@ -68,15 +68,13 @@ PPR_INLINE float pprDequantizeFraction(uint q) {
     return ((float(q) + 0.5f) / float(kPprFractionSteps) - 0.5f) / kPprFractionScale;
 }
 
-// Encodes a screen-space offset. Returns false (value = kPprClearValue) when it does not fit the
-// 12-bit integer parts; callers drop such writes rather than let them wrap.
-PPR_INLINE bool pprEncode(vec2 offset, PPR_OUT(uint) value) {
+// Packs an offset's rounded whole part and the fraction to store (decoded as is) in the basis chosen
+// by `offset`. False (value = kPprClearValue) when the whole part does not fit the 12-bit integers.
+PPR_INLINE bool pprEncodeParts(vec2 offset, vec2 whole, vec2 storedFraction, PPR_OUT(uint) value) {
     value = kPprClearValue;
     uint basis = pprBasisIndex(offset);
-    vec2 whole = floor(offset + 0.5f);
-    vec2 frac = pprMirrorAlong(offset - whole, offset);
     vec2 w = pprToBasis(whole, basis);
-    vec2 f = pprToBasis(frac, basis);
+    vec2 f = pprToBasis(storedFraction, basis);
     if (w.y < 0.0f || w.y > float(kPprMaxYInteger) || w.x < float(-kPprXBias) || w.x > float(kPprXBias - 1)) return false;
     uint y = uint(w.y) * kPprFractionSteps + pprQuantizeFraction(f.y);
     uint x = uint(int(w.x) + kPprXBias) * kPprFractionSteps + pprQuantizeFraction(f.x);
@@ -84,6 +82,23 @@ PPR_INLINE bool pprEncode(vec2 offset, PPR_OUT(uint) value) {
     if (packed == kPprClearValue) return false;  // only Y=4095, X=2047, both fractions 7, basis 3
     value = packed;
     return true;
+}
+
+// Encodes a screen-space offset, its fraction mirrored (above). Returns false (value =
+// kPprClearValue) when it does not fit the 12-bit integer parts; callers drop such writes rather than
+// let them wrap.
+PPR_INLINE bool pprEncode(vec2 offset, PPR_OUT(uint) value) {
+    vec2 whole = floor(offset + 0.5f);
+    return pprEncodeParts(offset, whole, pprMirrorAlong(offset - whole, offset), value);
+}
+
+// Encodes an offset whose fraction is stored unmirrored: the decoded whole + fraction is the offset
+// itself (to the 1/8 px quantisation), so the filtered sample lies exactly `offset` from the texel
+// centre. For a texel written at its centre from a point between source pixels (ppr_project's
+// magnified cells), where there is no landing to mirror.
+PPR_INLINE bool pprEncodeUnmirrored(vec2 offset, PPR_OUT(uint) value) {
+    vec2 whole = floor(offset + 0.5f);
+    return pprEncodeParts(offset, whole, offset - whole, value);
 }
 
 // The integer parts of an encoded value in its own basis (X across the axis, biased; Y along it)

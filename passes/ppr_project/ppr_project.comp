@@ -88,15 +88,80 @@ bool occludedByOtherReflector(vec3 eye, vec3 hit, uint self, uint candidates) {
     return false;
 }
 
-void writeOffset(ivec2 pix, vec3 mirrored) {
+// Writes the pixel's offset where its mirror image lands (`target`, pixels); false off screen.
+bool writeOffset(ivec2 pix, vec3 mirrored, out vec2 target) {
     vec4 clip = frame.viewProj * vec4(mirrored, 1.0);
-    if (clip.w <= 0.0) return;
+    if (clip.w <= 0.0) return false;
     vec2 ndc = clip.xy / clip.w;
-    if (any(greaterThanEqual(abs(ndc), vec2(1.0)))) return;
-    vec2 target = (ndc * 0.5 + 0.5) * frame.screenSize;
+    if (any(greaterThanEqual(abs(ndc), vec2(1.0)))) return false;
+    target = (ndc * 0.5 + 0.5) * frame.screenSize;
     uint value;
-    if (!pprEncode(target - (vec2(pix) + 0.5), value)) return;  // beyond the 12-bit range: dropped, not wrapped
+    if (!pprEncode(target - (vec2(pix) + 0.5), value)) return false;  // beyond the 12-bit range: dropped, not wrapped
     imageAtomicMin(intermediate, ivec2(target), value);
+    return true;
+}
+
+// splat=1 (ppr_project.h): where reflector r magnifies the surface at p, the pixel also writes the
+// target pixels inside the cell between its landing and its right and lower neighbours' landings,
+// each with the offset from the point of the source cell that maps to that pixel's centre, so the
+// magnified surface covers what lies behind it instead of showing it between its samples.
+void splatMagnified(ivec2 pix, vec3 p, vec3 surfaceNormal, uint reflector, vec3 mirrored, float facing, vec2 target) {
+    vec3 eye = frame.cameraPos.xyz;
+    // Target pixels per source pixel along the most stretched direction, estimated from what the
+    // choice already knows (the mirrored eye is as far from p as the eye from p's mirror image).
+    vec3 toEye = eye - p;
+    float toEyeLength = length(toEye), toMirroredLength = distance(eye, mirrored);
+    vec3 n = pc.facingOnly != 0u ? surfaceNormal : texelFetch(normalTex, pix, 0).xyz;
+    if (facing > 1.5) {  // facing=0: not known yet
+        vec3 planeNormal = reflectors[reflector].normal;
+        facing = dot(n, toEye - 2.0 * dot(eye - reflectors[reflector].center, planeNormal) * planeNormal) / toMirroredLength;
+    }
+    float cosEye = abs(dot(n, toEye)) / toEyeLength;
+    if (toEyeLength / toMirroredLength * max(1.0, abs(facing) / max(cosEye, 0.02)) < kPprSplatMinStretch) return;
+    ReflectorData r = reflectors[reflector];
+    float eyeHeight = dot(eye - r.center, r.normal);
+    float reach = kPprSplatReach * 2.0 * toEyeLength / (abs(frame.proj[1][1]) * frame.screenSize.y * max(cosEye, 0.05));
+    vec2 steps[2];  // where the right and the lower neighbour land, from this pixel's landing
+    vec2 from = vec2(0.0), to = vec2(1.0);  // the part of the source cell filled, per axis
+    for (int k = 0; k < 2; ++k) {
+        ivec2 q = pix + ivec2(1 - k, k);
+        vec2 uv = (vec2(q) + 0.5) * frame.invScreenSize;
+        float depth = all(lessThan(q, ivec2(frame.screenSize))) ? texelFetch(depthTex, q, 0).r : 0.0;
+        vec3 neighbour = depth > 0.0 ? worldFromDepth(uv, depth) : p;
+        if (depth <= 0.0 || distance(neighbour, p) > reach || dot(normalize(texelFetch(normalTex, q, 0).xyz), n) < kPprSplatNormalCos) {
+            // Not on this surface (its outline, seen as a sliver): the neighbour's ray on the pixel's
+            // tangent plane, and only the pixel's own half of the cell on either side.
+            vec3 ray = worldFromDepth(uv, 1.0) - eye;
+            float across = dot(ray, n);
+            if (abs(across) < 1e-6) return;
+            neighbour = eye + ray * (dot(p - eye, n) / across);
+            from[k] = -kPprSplatOutline;
+            to[k] = kPprSplatOutline;
+        }
+        float height = dot(neighbour - r.center, r.normal);
+        if (height <= kPprAboveEpsilon) return;
+        vec3 mirrored = neighbour - 2.0 * height * r.normal;
+        if (!reflectorContains(r, mix(eye, mirrored, eyeHeight / (eyeHeight + height)))) return;
+        vec4 clip = frame.viewProj * vec4(mirrored, 1.0);
+        if (clip.w <= 0.0) return;
+        steps[k] = (clip.xy / clip.w * 0.5 + 0.5) * frame.screenSize - target;
+        if (length(steps[k]) >= kPprSplatMaxStep) return;
+    }
+    mat2 cell = mat2(steps[0], steps[1]);
+    if (abs(determinant(cell)) < 1e-3) return;
+    mat2 toCell = inverse(cell);
+    vec2 c00 = target + cell * from, c10 = target + cell * vec2(to.x, from.y), c01 = target + cell * vec2(from.x, to.y), c11 = target + cell * to;
+    vec2 lo = min(min(c00, c10), min(c01, c11)), hi = max(max(c00, c10), max(c01, c11));
+    ivec2 first = max(ivec2(ceil(lo - 0.5)), ivec2(0)), last = min(ivec2(floor(hi - 0.5)), ivec2(frame.screenSize) - 1);
+    ivec2 landed = ivec2(target);
+    for (int y = first.y; y <= last.y; ++y)
+        for (int x = first.x; x <= last.x; ++x) {
+            vec2 centre = vec2(x, y) + 0.5;
+            vec2 along = toCell * (centre - target);  // the source point, from this pixel's centre
+            if (any(lessThan(along, from)) || any(greaterThanEqual(along, to)) || ivec2(x, y) == landed) continue;
+            uint value;
+            if (pprEncodeUnmirrored(centre - (vec2(pix) + 0.5 + along), value)) imageAtomicMin(intermediate, ivec2(x, y), value);
+        }
 }
 
 // A glass panel's data goes to its atlas region, at the texel under the written pixel; the offset
@@ -258,9 +323,11 @@ ivec2 pixelOf(uint j) {
 // Does reflector r take the pixel at p, nearer than bestDistance? Its height d above r's plane, its
 // mirror image and where the ray from the eye to that image crosses the plane (the hit, which r's
 // rectangle must hold). Not when the pixel is not above the plane, the camera sees r from behind, or
-// (facing=1) the mirrored eye sees the surface from behind.
+// (facing=1) the mirrored eye sees the surface from behind. `facing`: with facing=1, the cosine between
+// the surface normal and the direction to the mirrored eye (splatMagnified's estimate); else 2.
 bool takes(ReflectorData r, vec3 p, vec3 eye, vec3 surfaceNormal, float above, float bestDistance, out float d, out vec3 mirrored,
-           out vec3 hit) {
+           out vec3 hit, out float facing) {
+    facing = 2.0;
     d = dot(p - r.center, r.normal);
     if (d <= above || d >= bestDistance) return false;  // not above this plane, or a nearer parallel shape won
     float eyeHeight = dot(eye - r.center, r.normal);
@@ -268,7 +335,8 @@ bool takes(ReflectorData r, vec3 p, vec3 eye, vec3 surfaceNormal, float above, f
     mirrored = p - 2.0 * d * r.normal;
     if (pc.facingOnly != 0u) {  // seen from behind by the mirrored eye: hidden in this reflection
         vec3 mirroredEye = eye - 2.0 * eyeHeight * r.normal;
-        if (dot(surfaceNormal, normalize(mirroredEye - p)) < kPprFacingCos) return false;
+        facing = dot(surfaceNormal, normalize(mirroredEye - p));
+        if (facing < kPprFacingCos) return false;
     }
     // Ray from the camera to the mirrored point crosses the plane at eyeHeight / (eyeHeight + d).
     hit = mix(eye, mirrored, eyeHeight / (eyeHeight + d));
@@ -277,9 +345,14 @@ bool takes(ReflectorData r, vec3 p, vec3 eye, vec3 surfaceNormal, float above, f
 
 // The reflector chosen for a pixel writes its offset: glass into its atlas region, others where no
 // other reflector hides the hit.
-void writeChosen(ivec2 pix, vec3 eye, uint best, vec3 mirrored, vec3 hit, uint occluders) {
-    if (reflectors[best].kind == kReflectorGlass) writeGlassOffset(pix, mirrored, best);
-    else if (!occludedByOtherReflector(eye, hit, best, occluders)) writeOffset(pix, mirrored);
+void writeChosen(ivec2 pix, vec3 p, vec3 surfaceNormal, vec3 eye, uint best, vec3 mirrored, vec3 hit, float facing, uint occluders) {
+    if (reflectors[best].kind == kReflectorGlass) {
+        writeGlassOffset(pix, mirrored, best);
+        return;
+    }
+    vec2 target;
+    if (!occludedByOtherReflector(eye, hit, best, occluders) && writeOffset(pix, mirrored, target) && pc.splat != 0u)
+        splatMagnified(pix, p, surfaceNormal, best, mirrored, facing, target);
 }
 
 // A glass reflector without an atlas region this frame takes no pixels.
@@ -301,6 +374,7 @@ void projectPixelOnGrid(ivec2 pix, vec3 p, vec3 eye, vec3 surfaceNormal, float a
     uint best = 0xFFFFFFFFu;
     float bestDistance = 3.4e38;
     vec3 bestMirrored = vec3(0.0), bestHit = vec3(0.0);
+    float bestFacing = 2.0;
     for (uint w = 0u; w * 32u < candidates; ++w) {
         uint bits = 0u;
         for (uint y = cells.y; y <= cells.w; ++y)
@@ -308,16 +382,17 @@ void projectPixelOnGrid(ivec2 pix, vec3 p, vec3 eye, vec3 surfaceNormal, float a
         for (; bits != 0u; bits &= bits - 1u) {  // in projection order, as projectPixel's loop
             uint i = survivorAt(w * 32u + uint(findLSB(bits)));
             ReflectorData r = reflectors[i];
-            float d;
+            float d, f;
             vec3 m, h;
-            if (skipped(r, i) || !takes(r, p, eye, surfaceNormal, above, bestDistance, d, m, h)) continue;
+            if (skipped(r, i) || !takes(r, p, eye, surfaceNormal, above, bestDistance, d, m, h, f)) continue;
             best = i;
+            bestFacing = f;
             bestDistance = d;
             bestMirrored = m;
             bestHit = h;
         }
     }
-    if (best != 0xFFFFFFFFu) writeChosen(pix, eye, best, bestMirrored, bestHit, occluders);
+    if (best != 0xFFFFFFFFu) writeChosen(pix, p, surfaceNormal, eye, best, bestMirrored, bestHit, bestFacing, occluders);
 }
 
 // Projects one pixel of the tile, at world position p, into every reflector among the candidates
@@ -338,21 +413,23 @@ void projectPixel(ivec2 pix, vec3 p, uint candidates, uint occluders) {
     uint best = 0xFFFFFFFFu;
     float bestDistance = 0.0;
     vec3 bestMirrored = vec3(0.0), bestHit = vec3(0.0);
+    float bestFacing = 2.0;
     for (uint k = 0u; k <= candidates; ++k) {
         uint i = k < candidates ? survivorAt(k) : 0u;
         uint g = k < candidates ? reflectors[i].orientationGroup : 0xFFFFFFFEu;
         if (g != group) {
-            if (best != 0xFFFFFFFFu) writeChosen(pix, eye, best, bestMirrored, bestHit, occluders);
+            if (best != 0xFFFFFFFFu) writeChosen(pix, p, surfaceNormal, eye, best, bestMirrored, bestHit, bestFacing, occluders);
             group = g;
             best = 0xFFFFFFFFu;
             bestDistance = 3.4e38;
         }
         if (k == candidates) break;
         ReflectorData r = reflectors[i];
-        float d;
+        float d, f;
         vec3 mirrored, hit;
-        if (skipped(r, i) || !takes(r, p, eye, surfaceNormal, above, bestDistance, d, mirrored, hit)) continue;
+        if (skipped(r, i) || !takes(r, p, eye, surfaceNormal, above, bestDistance, d, mirrored, hit, f)) continue;
         best = i;
+        bestFacing = f;
         bestDistance = d;
         bestMirrored = mirrored;
         bestHit = hit;

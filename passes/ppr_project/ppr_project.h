@@ -11,6 +11,19 @@ PPR_CONST(float, kPprAboveEpsilonPerMetre, 1e-4f)
 // front of the same object), so it is not projected. Below this cosine between its G-buffer normal
 // and the direction to the mirrored eye it counts as facing away (a margin for normal maps).
 PPR_CONST(float, kPprFacingCos, -0.05f)
+// --set splat=1: a surface the reflection magnifies (seen at a grazing angle by the camera, face on by
+// the mirrored eye) lands its pixels several pixels apart, and whatever lies behind it shows in the
+// gaps. Such a pixel also writes the target pixels between its landing and its right and lower
+// neighbours' (the cell of the source grid it starts, mirrored), where those neighbours lie on its
+// surface. Only pixels whose estimated stretch (view distances and cosines to the eye and the mirrored
+// eye) exceeds kPprSplatMinStretch look at their neighbours; a neighbour is on the surface when its
+// G-buffer normal is within kPprSplatNormalCos of the pixel's and it lies within kPprSplatReach pixel
+// footprints; a cell whose side lands kPprSplatMaxStep or more pixels away is not filled.
+PPR_CONST(float, kPprSplatMinStretch, 1.25f)
+PPR_CONST(float, kPprSplatNormalCos, 0.8f)
+PPR_CONST(float, kPprSplatReach, 3.0f)
+PPR_CONST(float, kPprSplatMaxStep, 16.0f)
+PPR_CONST(float, kPprSplatOutline, 0.25f)
 
 // Invocations per 16x16 tile workgroup, each projecting kPprTileSize^2 / this pixels (the shader's
 // specialization constant; --set project_threads=auto picks by device type). On a CPU device the
@@ -30,7 +43,7 @@ struct PprProjectPush {
     uint glass;           // 1: glass reflectors write into their atlas regions (--set glass=1); 0: skipped
     uint facingOnly;      // 1: a pixel whose surface faces away from the mirrored eye writes nothing (--set facing=1)
     uint tileList;        // 1: workgroup i projects the tile in the reach pass's list at i (ppr_reach); 0: tile = workgroup id
-    uint pad2;
+    uint splat;           // 1: magnified surfaces fill the cells between their pixels' landings (--set splat=1)
 };
 PPR_END
 PPR_SIZE_CHECK(PprProjectPush, 32);

@@ -39,6 +39,7 @@ PprProjectOutputs PprProjectPass::add(graph::RenderGraph& g, const FrameInputs& 
     push.glass = inputs.glass ? 1u : 0u;
     push.facingOnly = inputs.facingOnly ? 1u : 0u;
     push.tileList = inputs.reach ? 1u : 0u;
+    push.splat = inputs.splat ? 1u : 0u;
     PprProjectOutputs out;
     const uint32_t tileCount = inputs.tilesX * inputs.tilesY;
     // With a tile list the reach pass has already written the survivor counts of the tiles it left

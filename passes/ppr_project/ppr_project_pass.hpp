@@ -40,6 +40,7 @@ struct PprProjectInputs {
     bool glass = true;                // --set glass
     graph::ImageHandle normal;        // G-buffer normal (read with facingOnly)
     bool facingOnly = true;           // --set facing
+    bool splat = true;                // --set splat: magnified surfaces fill between their landings
     uint32_t threads = 0;             // invocations per tile, one of kProjectThreadChoices; 0: autoThreads
     std::optional<PprTileList> reach;  // dispatch on these tiles only (tiles=1, indirect=1); else on every tile
 };

@@ -37,8 +37,8 @@ struct Golden {
     const char* current;  // and added for the current build
 };
 const Golden kGoldens[] = {
-    {"ppr_before_normalmaps.json", "--set normalmap=off --set fallback_env=0", "--set holes=slides --set facing=0 --set taa=0 --set fallback=ssr --set normal_refine=0"},
-    {"ppr_before_hole_rule.json", "", "--set holes=slides --set facing=0 --set taa=0 --set fallback=ssr --set normal_refine=0"},
+    {"ppr_before_normalmaps.json", "--set normalmap=off --set fallback_env=0", "--set holes=slides --set facing=0 --set splat=0 --set taa=0 --set fallback=ssr --set normal_refine=0"},
+    {"ppr_before_hole_rule.json", "", "--set holes=slides --set facing=0 --set splat=0 --set taa=0 --set fallback=ssr --set normal_refine=0"},
 };
 constexpr const char* kSize = "320x180";
 
