@@ -170,3 +170,27 @@ TEST(PprEncoding, EncodedWholePartsAreTheDecodedOnesAndBoundTheDistance) {
     }
     EXPECT_GT(checked, 1000u);
 }
+
+// The projection's magnified cells (splat=1) write texel centres from points between source pixels:
+// their fraction is stored as is, so whole + fraction is the offset itself (no mirroring to undo),
+// and they order against the mirrored values as any other offset of that length.
+TEST(PprEncoding, UnmirroredFractionDecodesToTheOffsetItself) {
+    float worst = 0.0f;
+    for (int a = 0; a < 360; ++a) {
+        const float angle = 2.0f * kPi * (a + 0.21f) / 360.0f;
+        const glm::vec2 dir(std::cos(angle), std::sin(angle));
+        for (float len = 0.4f; len < 600.0f; len = len < 20.0f ? len + 0.137f : len * 1.05f) {
+            const glm::vec2 offset = dir * len;
+            uint unmirrored = 0, mirrored = 0;
+            ASSERT_TRUE(pprEncodeUnmirrored(offset, unmirrored));
+            ASSERT_TRUE(pprEncode(offset, mirrored));
+            const PprDecoded d = pprDecode(unmirrored);
+            const float err = glm::length(d.whole + d.fraction - offset);
+            worst = std::max(worst, err);
+            ASSERT_LE(err, 0.125f + 1e-4f) << offset.x << "," << offset.y;
+            EXPECT_EQ(d.whole, pprDecode(mirrored).whole);
+            EXPECT_EQ(unmirrored >> 20u, mirrored >> 20u);  // the same integer length along the axis
+        }
+    }
+    EXPECT_GT(worst, 0.05f);
+}
