@@ -108,16 +108,21 @@ bool writeOffset(ivec2 pix, vec3 mirrored, out vec2 target) {
 void splatMagnified(ivec2 pix, vec3 p, vec3 surfaceNormal, uint reflector, vec3 mirrored, float facing, vec2 target) {
     vec3 eye = frame.cameraPos.xyz;
     // Target pixels per source pixel along the most stretched direction, estimated from what the
-    // choice already knows (the mirrored eye is as far from p as the eye from p's mirror image).
+    // choice already knows (the mirrored eye is as far from p as the eye from p's mirror image):
+    // the distance ratio times the ratio of the cosines to the mirrored eye and to the eye, squared
+    // and multiplied out (every written pixel pays for this test; few pass it).
     vec3 toEye = eye - p;
-    float toEyeLength = length(toEye), toMirroredLength = distance(eye, mirrored);
+    float eyeSquared = dot(toEye, toEye), mirroredSquared = dot(eye - mirrored, eye - mirrored);
     vec3 n = pc.facingOnly != 0u ? surfaceNormal : texelFetch(normalTex, pix, 0).xyz;
     if (facing > 1.5) {  // facing=0: not known yet
         vec3 planeNormal = reflectors[reflector].normal;
-        facing = dot(n, toEye - 2.0 * dot(eye - reflectors[reflector].center, planeNormal) * planeNormal) / toMirroredLength;
+        facing = dot(n, toEye - 2.0 * dot(eye - reflectors[reflector].center, planeNormal) * planeNormal) * inversesqrt(mirroredSquared);
     }
-    float cosEye = abs(dot(n, toEye)) / toEyeLength;
-    if (toEyeLength / toMirroredLength * max(1.0, abs(facing) / max(cosEye, 0.02)) < kPprSplatMinStretch) return;
+    float towardEye = dot(n, toEye);
+    float eyeCosSquared = max(towardEye * towardEye, kPprSplatMinCos * kPprSplatMinCos * eyeSquared);  // times eyeSquared
+    if (eyeSquared * max(eyeCosSquared, facing * facing * eyeSquared) < kPprSplatMinStretch * kPprSplatMinStretch * mirroredSquared * eyeCosSquared)
+        return;
+    float toEyeLength = sqrt(eyeSquared), cosEye = sqrt(eyeCosSquared / eyeSquared);
     ReflectorData r = reflectors[reflector];
     float eyeHeight = dot(eye - r.center, r.normal);
     float reach = kPprSplatReach * 2.0 * toEyeLength / (abs(frame.proj[1][1]) * frame.screenSize.y * max(cosEye, 0.05));

@@ -20,6 +20,7 @@ PPR_CONST(float, kPprFacingCos, -0.05f)
 // G-buffer normal is within kPprSplatNormalCos of the pixel's and it lies within kPprSplatReach pixel
 // footprints; a cell whose side lands kPprSplatMaxStep or more pixels away is not filled.
 PPR_CONST(float, kPprSplatMinStretch, 1.25f)
+PPR_CONST(float, kPprSplatMinCos, 0.02f)  // the cosine to the eye is taken as at least this
 PPR_CONST(float, kPprSplatNormalCos, 0.8f)
 PPR_CONST(float, kPprSplatReach, 3.0f)
 PPR_CONST(float, kPprSplatMaxStep, 16.0f)
