@@ -53,8 +53,8 @@ int runComparePath(const Options& o) {
         const std::filesystem::path dir = session.cameraDir(cam.name);
         const uint32_t errorsBefore = ctx.validationErrors();
         const std::vector<scene::CameraPose> poses = session.path(cam);
-        // A still camera on a moving scene is not still: its frame-to-frame change is the motion.
-        const bool still = scene::isStill(poses) && !scene::cameraPathSceneTime(o.path, 1);
+        // A still camera; on a moving scene its flicker is the change the reference does not make.
+        const bool still = scene::isStill(poses);
 
         std::vector<ReferenceFrame> reference(poses.size());
         {
@@ -83,7 +83,7 @@ int runComparePath(const Options& o) {
         metrics["reference_samples"] = scene::kJitterLength;
         metrics["techniques"] = nlohmann::json::object();
         std::ostringstream csv;
-        csv << "technique,frame,x,y,z,yaw_deg,pitch_deg,psnr_db,reflector_psnr_db,change,frame_gpu_ms\n";
+        csv << "technique,frame,x,y,z,yaw_deg,pitch_deg,psnr_db,reflector_psnr_db,change,excess_change,frame_gpu_ms\n";
         PlotSpec whole{"whole frame vs " + std::to_string(scene::kJitterLength) + "x supersampled " + o.reference, "frame", "PSNR (dB)"};
         PlotSpec reflectors{"reflector pixels", "frame", "PSNR (dB)"};
         // strip.png: per row the middle and the last frame, each beside its error on reflector pixels.
@@ -104,6 +104,7 @@ int runComparePath(const Options& o) {
                 f.psnrDb = imagePsnrDb(r.image, reference[i].supersampled);
                 f.reflectorPsnrDb = compositedPsnrDb(r.image, reference[i].supersampled, reference[i].reflectorPixels);
                 f.change = i ? meanAbsoluteChange(r.image, previous) : 0.0;
+                f.excessChange = i ? meanAbsoluteExcessChange(r.image, previous, reference[i].supersampled, reference[i - 1].supersampled) : 0.0;
                 frames.push_back(f);
                 frameMs.push_back(r.totalMedianMs);
                 util::writePng(frameFile(folder, i), r.image);
@@ -115,7 +116,7 @@ int runComparePath(const Options& o) {
                 }
                 const scene::CameraPose& p = poses[i];
                 csv << '"' << t << "\"," << i << ',' << p.position.x << ',' << p.position.y << ',' << p.position.z << ',' << p.yawDeg << ','
-                    << p.pitchDeg << ',' << f.psnrDb << ',' << f.reflectorPsnrDb << ',' << f.change << ',' << r.totalMedianMs << '\n';
+                    << p.pitchDeg << ',' << f.psnrDb << ',' << f.reflectorPsnrDb << ',' << f.change << ',' << f.excessChange << ',' << r.totalMedianMs << '\n';
                 wholeSeries.x.push_back(double(i));
                 wholeSeries.y.push_back(std::min(f.psnrDb, 60.0));
                 reflectorSeries.x.push_back(double(i));

@@ -16,6 +16,22 @@ double meanAbsoluteChange(const util::Rgba8Image& a, const util::Rgba8Image& b) 
     return n ? sum / (3.0 * double(n)) : 0.0;
 }
 
+double meanAbsoluteExcessChange(const util::Rgba8Image& image, const util::Rgba8Image& previous, const util::Rgba8Image& reference,
+                                const util::Rgba8Image& referencePrevious) {
+    const size_t n = size_t(image.width) * image.height;
+    for (const util::Rgba8Image* other : {&previous, &reference, &referencePrevious})
+        if (other->width != image.width || other->height != image.height || other->pixels.size() != n * 4 || image.pixels.size() != n * 4)
+            throw std::invalid_argument("meanAbsoluteExcessChange: image " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                                        ", another " + std::to_string(other->width) + "x" + std::to_string(other->height));
+    double sum = 0.0;
+    for (size_t i = 0; i < n; ++i)
+        for (int c = 0; c < 3; ++c) {
+            const size_t k = i * 4 + c;
+            sum += std::abs((double(image.pixels[k]) - double(previous.pixels[k])) - (double(reference.pixels[k]) - double(referencePrevious.pixels[k])));
+        }
+    return n ? sum / (3.0 * double(n)) : 0.0;
+}
+
 util::Rgba8Image displayErrorHeatMap(const util::Rgba8Image& image, const util::Rgba8Image& reference, const FloatImage& mask) {
     const size_t n = size_t(image.width) * image.height;
     const bool sameSize = reference.width == image.width && reference.height == image.height && mask.width == image.width &&
@@ -54,7 +70,7 @@ TemporalSummary summarizeTemporal(const std::vector<TemporalFrame>& frames, bool
         s.settledFrom = std::max(1u, std::min(convergenceFrames, s.frames / 2));
         double sum = 0.0;
         uint32_t counted = 0;
-        for (uint32_t i = s.settledFrom; i < s.frames; ++i, ++counted) sum += frames[i].change;
+        for (uint32_t i = s.settledFrom; i < s.frames; ++i, ++counted) sum += frames[i].excessChange;
         s.flicker = counted ? sum / counted : 0.0;
     }
     return s;

@@ -31,9 +31,23 @@ TEST(TemporalMetrics, ChangeIsTheMeanAbsoluteRgbDifferenceInLevels) {
     EXPECT_THROW(meanAbsoluteChange(flat(0), wide), std::invalid_argument);
 }
 
+TEST(TemporalMetrics, ExcessChangeIsTheChangeTheReferenceDoesNotMake) {
+    // Unchanged reference: the plain change, bit for bit (a still scene's flicker as before).
+    EXPECT_EQ(meanAbsoluteExcessChange(flat(10), flat(14), flat(50), flat(50)), meanAbsoluteChange(flat(10), flat(14)));
+    // The image changes as the reference does (real motion): no flicker.
+    EXPECT_EQ(meanAbsoluteExcessChange(flat(14), flat(10), flat(54), flat(50)), 0.0);
+    // Against the reference's change: 4 up where it went 4 down is 8 levels of flicker.
+    EXPECT_DOUBLE_EQ(meanAbsoluteExcessChange(flat(14), flat(10), flat(46), flat(50)), 8.0);
+    ppr::util::Rgba8Image wide = flat(0);
+    wide.width = 6;
+    wide.height = 1;
+    EXPECT_THROW(meanAbsoluteExcessChange(flat(0), flat(0), wide, flat(0)), std::invalid_argument);
+}
+
 TEST(TemporalMetrics, MeansOverEveryFrameFlickerOnlyWhenStillAndSettled) {
     std::vector<TemporalFrame> frames;
-    for (int i = 0; i < 40; ++i) frames.push_back({30.0 + i % 2, 20.0, i < 16 ? 9.0 : 1.0});
+    // Flicker counts the change the reference does not make (excessChange), not the raw change.
+    for (int i = 0; i < 40; ++i) frames.push_back({30.0 + i % 2, 20.0, 5.0, i < 16 ? 9.0 : 1.0});
     const TemporalSummary moving = summarizeTemporal(frames, false, 16);
     EXPECT_DOUBLE_EQ(moving.psnrDbMean, 30.5);
     EXPECT_DOUBLE_EQ(moving.reflectorPsnrDbMean, 20.0);
