@@ -14,31 +14,37 @@ constexpr float kPi = 3.14159265f;
 // The offset the decoder restores, with the fraction flip undone (mirroring is its own inverse).
 glm::vec2 restored(const PprDecoded& d, glm::vec2 original) { return d.whole + pprMirrorAlong(d.fraction, original); }
 
+// Dense sweep of offsets: `directions` directions, off the axes, × lengths from 0.3 px up to
+// `longest` (0.173 px apart below 40 px, then 1.3 % apart).
+template <class Visit>
+void forEachSweptOffset(int directions, float longest, Visit&& visit) {
+    for (int a = 0; a < directions; ++a) {
+        const float angle = 2.0f * kPi * (a + 0.37f) / float(directions);
+        const glm::vec2 dir(std::cos(angle), std::sin(angle));
+        for (float len = 0.3f; len < longest; len = len < 40.0f ? len + 0.173f : len * 1.013f) visit(dir * len);
+    }
+}
+
 }  // namespace
 
 TEST(PprEncoding, RoundTripWithinOneEighthPixelInEveryDirectionAndLength) {
-    // Dense sweep: 720 directions × lengths from 0.3 px to the 12-bit limit along the axis.
+    // 720 directions × lengths to the 12-bit limit along the axis.
     float worst = 0.0f;
     int checked = 0;
-    for (int a = 0; a < 720; ++a) {
-        const float angle = 2.0f * kPi * (a + 0.37f) / 720.0f;
-        const glm::vec2 dir(std::cos(angle), std::sin(angle));
-        for (float len = 0.3f; len < 2800.0f; len = len < 40.0f ? len + 0.173f : len * 1.013f) {
-            const glm::vec2 offset = dir * len;
-            uint v = 0;
-            if (!pprEncode(offset, v)) {
-                // Only offsets beyond the X range may be refused; Y up to 4095 always fits.
-                EXPECT_GT(std::min(std::abs(offset.x), std::abs(offset.y)), 2047.0f) << offset.x << "," << offset.y;
-                continue;
-            }
-            const PprDecoded d = pprDecode(v);
-            ASSERT_TRUE(d.valid);
-            const float err = glm::length(restored(d, offset) - offset);
-            worst = std::max(worst, err);
-            ASSERT_LE(err, 0.125f + 1e-4f) << "offset " << offset.x << "," << offset.y;
-            ++checked;
+    forEachSweptOffset(720, 2800.0f, [&](glm::vec2 offset) {
+        uint v = 0;
+        if (!pprEncode(offset, v)) {
+            // Only offsets beyond the X range may be refused; Y up to 4095 always fits.
+            EXPECT_GT(std::min(std::abs(offset.x), std::abs(offset.y)), 2047.0f) << offset.x << "," << offset.y;
+            return;
         }
-    }
+        const PprDecoded d = pprDecode(v);
+        ASSERT_TRUE(d.valid);
+        const float err = glm::length(restored(d, offset) - offset);
+        worst = std::max(worst, err);
+        ASSERT_LE(err, 0.125f + 1e-4f) << "offset " << offset.x << "," << offset.y;
+        ++checked;
+    });
     EXPECT_GT(checked, 300000);
     EXPECT_GT(worst, 0.05f);  // the sweep does exercise the quantisation
 }
@@ -176,21 +182,16 @@ TEST(PprEncoding, EncodedWholePartsAreTheDecodedOnesAndBoundTheDistance) {
 // and they order against the mirrored values as any other offset of that length.
 TEST(PprEncoding, UnmirroredFractionDecodesToTheOffsetItself) {
     float worst = 0.0f;
-    for (int a = 0; a < 360; ++a) {
-        const float angle = 2.0f * kPi * (a + 0.21f) / 360.0f;
-        const glm::vec2 dir(std::cos(angle), std::sin(angle));
-        for (float len = 0.4f; len < 600.0f; len = len < 20.0f ? len + 0.137f : len * 1.05f) {
-            const glm::vec2 offset = dir * len;
-            uint unmirrored = 0, mirrored = 0;
-            ASSERT_TRUE(pprEncodeUnmirrored(offset, unmirrored));
-            ASSERT_TRUE(pprEncode(offset, mirrored));
-            const PprDecoded d = pprDecode(unmirrored);
-            const float err = glm::length(d.whole + d.fraction - offset);
-            worst = std::max(worst, err);
-            ASSERT_LE(err, 0.125f + 1e-4f) << offset.x << "," << offset.y;
-            EXPECT_EQ(d.whole, pprDecode(mirrored).whole);
-            EXPECT_EQ(unmirrored >> 20u, mirrored >> 20u);  // the same integer length along the axis
-        }
-    }
+    forEachSweptOffset(360, 600.0f, [&](glm::vec2 offset) {
+        uint unmirrored = 0, mirrored = 0;
+        ASSERT_TRUE(pprEncodeUnmirrored(offset, unmirrored));
+        ASSERT_TRUE(pprEncode(offset, mirrored));
+        const PprDecoded d = pprDecode(unmirrored);
+        const float err = glm::length(d.whole + d.fraction - offset);
+        worst = std::max(worst, err);
+        ASSERT_LE(err, 0.125f + 1e-4f) << offset.x << "," << offset.y;
+        EXPECT_EQ(d.whole, pprDecode(mirrored).whole);
+        EXPECT_EQ(unmirrored >> 20u, mirrored >> 20u);  // the same integer length along the axis
+    });
     EXPECT_GT(worst, 0.05f);
 }
