@@ -223,7 +223,7 @@ TEST(PprQuality, ContactMarchShowsWhatStandsOnTheReflector) {
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
 
-// splat=1 (ppr_project.comp splatMagnified): a surface the camera sees at a grazing angle and the
+// splat=1 (ppr_project/ppr_splat.glsl splatMagnified): a surface the camera sees at a grazing angle and the
 // mirrored eye face on is magnified in the reflection; its pixels land several pixels apart and what
 // lies behind it shows between them. Each such pixel also fills the cell between its landing and its
 // neighbours' (or, at its outline, a quarter cell each way on its tangent plane). Measured at 640x360
