@@ -53,10 +53,10 @@ void splatMagnified(ivec2 pix, vec3 p, vec3 surfaceNormal, uint reflector, vec3 
         vec4 clip = frame.viewProj * vec4(mirrored, 1.0);
         if (clip.w <= 0.0) return;
         steps[k] = (clip.xy / clip.w * 0.5 + 0.5) * frame.screenSize - target;
-        if (length(steps[k]) >= kPprSplatMaxStep) return;
+        if (!(length(steps[k]) < kPprSplatMaxStep)) return;  // NaN too: the loop below stays within 32 x 32 pixels
     }
     mat2 cell = mat2(steps[0], steps[1]);
-    if (abs(determinant(cell)) < 1e-3) return;
+    if (!(abs(determinant(cell)) >= 1e-3)) return;
     mat2 toCell = inverse(cell);
     vec2 c00 = target + cell * from, c10 = target + cell * vec2(to.x, from.y), c01 = target + cell * vec2(from.x, to.y), c11 = target + cell * to;
     vec2 lo = min(min(c00, c10), min(c01, c11)), hi = max(max(c00, c10), max(c01, c11));
