@@ -24,6 +24,9 @@ PPR_CONST(float, kPprSplatMinCos, 0.02f)  // the cosine to the eye is taken as a
 PPR_CONST(float, kPprSplatNormalCos, 0.8f)
 PPR_CONST(float, kPprSplatReach, 3.0f)
 PPR_CONST(float, kPprSplatMaxStep, 16.0f)
+// A neighbour not on the surface (the pixel sits on its outline): its ray on the pixel's tangent
+// plane, and this fraction of the cell filled on either side (the sample says the surface covers
+// the pixel's centre, not how far it reaches; 0.5 overshot, docs/quality.md).
 PPR_CONST(float, kPprSplatOutline, 0.25f)
 
 // Invocations per 16x16 tile workgroup, each projecting kPprTileSize^2 / this pixels (the shader's
