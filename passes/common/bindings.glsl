@@ -4,6 +4,9 @@
 
 layout(set = 0, binding = 0, scalar) uniform FrameBlock { FrameConstants frame; };
 
+// Clip coordinates to pixel coordinates (the inverse of the projection part of worldFromDepth).
+vec2 pixelFromClip(vec4 h) { return (h.xy / h.w * 0.5 + 0.5) * frame.screenSize; }
+
 vec3 worldFromDepth(vec2 uv, float depth) {
     vec4 p = frame.invViewProj * vec4(uv * 2.0 - 1.0, depth, 1.0);
     return p.xyz / p.w;

@@ -111,7 +111,7 @@ void writeGlassOffset(ivec2 pix, vec3 mirrored, uint panel) {
     GlassRegionData region = glassRegions[panel];
     vec4 clip = frame.viewProj * vec4(mirrored, 1.0);
     if (clip.w <= 0.0 || region.valid == 0u) return;
-    vec2 target = (clip.xy / clip.w * 0.5 + 0.5) * frame.screenSize;
+    vec2 target = pixelFromClip(clip);
     ivec2 texel = ivec2(floor(glassAtlasFromScreen(region, target)));
     ivec2 lo = ivec2(region.atlasOrigin), hi = lo + ivec2(region.atlasSize);
     if (any(lessThan(texel, lo)) || any(greaterThanEqual(texel, hi))) return;  // never into another region

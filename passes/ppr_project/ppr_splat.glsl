@@ -52,7 +52,7 @@ void splatMagnified(ivec2 pix, vec3 p, vec3 surfaceNormal, uint reflector, vec3 
         if (!reflectorContains(r, mix(eye, mirrored, eyeHeight / (eyeHeight + height)))) return;
         vec4 clip = frame.viewProj * vec4(mirrored, 1.0);
         if (clip.w <= 0.0) return;
-        steps[k] = (clip.xy / clip.w * 0.5 + 0.5) * frame.screenSize - target;
+        steps[k] = pixelFromClip(clip) - target;
         if (!(length(steps[k]) < kPprSplatMaxStep)) return;  // NaN too: the loop below stays within 32 x 32 pixels
     }
     mat2 cell = mat2(steps[0], steps[1]);

@@ -8,6 +8,7 @@
 #include "ppr_common/encoding.h"
 #include "ppr_common/tiles.h"
 #include "ppr_reflect/ppr_reflect.h"
+#include "ssr_common/ssr.h"
 
 // PPR step 3, the reflection pass: resolves each reflector pixel (ppr_common/ppr_resolve.glsl: decode,
 // hole filling, filtered sample, anti-bleeding), then what the flat data cannot show: the rim, the
@@ -53,7 +54,7 @@ bool environmentUsesProbe() { return (pc.flags & kPprEnvironmentProbe) != 0u; }
 
 // Clip coordinates to pixel coordinates; false behind the near plane or off screen.
 bool screenFromClip(vec4 h, out vec2 pixel) {
-    pixel = (h.xy / h.w * 0.5 + 0.5) * frame.screenSize;
+    pixel = pixelFromClip(h);
     return h.w > frame.cameraPos.w && all(greaterThanEqual(pixel, vec2(0.0))) && all(lessThan(pixel, frame.screenSize));
 }
 
@@ -200,7 +201,7 @@ uint contactTest(ClipRay ray, float along, out vec2 x) {
     if (farthest <= 0.0) return 0u;
     float farW = near / farthest, nearW = near / nearest;
     if (rayW <= farW * 1.001) return 0u;
-    return rayW <= nearW + kPprContactThickness + kPprContactThicknessScale * nearW ? 1u : 2u;
+    return rayW <= nearW + ssrThickness(nearW, kPprContactThickness, kPprContactThicknessScale) ? 1u : 2u;
 }
 
 // contact=1: the reflected ray from this pixel's surface toward the point its data reflects (seen at

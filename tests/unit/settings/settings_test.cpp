@@ -1,6 +1,7 @@
 // Settings declared once: every key parses its default, round-trips its text, rejects what is out of
 // range with a message naming the key, and decodes into the typed FrameSettings the passes read.
 #include "common/frame.h"
+#include "ppr_reflect/ppr_reflect.h"
 #include "settings/debug_views.hpp"
 #include "settings/settings.hpp"
 
@@ -28,6 +29,14 @@ TEST(Settings, DefaultsReadBackAsDeclared) {
     const Settings s;
     for (const SettingDecl& d : settingDecls()) EXPECT_EQ(s.get(d.key), d.defaultValue) << d.key;
     EXPECT_EQ(s.all().size(), settingDecls().size());
+}
+
+// PPR's contact march tests its taps with ssr-brute's default thickness (ppr_reflect.h): the two
+// declarations must not drift apart.
+TEST(Settings, ContactMarchThicknessIsTheSsrDefault) {
+    const FrameSettings& v = Settings().values();
+    EXPECT_EQ(v.ssr.thickness, ppr::gpu::kPprContactThickness);
+    EXPECT_EQ(v.ssr.thicknessScale, ppr::gpu::kPprContactThicknessScale);
 }
 
 TEST(Settings, DecodesIntoTypedFields) {
