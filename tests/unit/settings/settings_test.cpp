@@ -34,7 +34,8 @@ TEST(Settings, DefaultsReadBackAsDeclared) {
 // PPR's contact march tests its taps with ssr-brute's default thickness (ppr_reflect.h): the two
 // declarations must not drift apart.
 TEST(Settings, ContactMarchThicknessIsTheSsrDefault) {
-    const FrameSettings& v = Settings().values();
+    const Settings s;
+    const FrameSettings& v = s.values();
     EXPECT_EQ(v.ssr.thickness, ppr::gpu::kPprContactThickness);
     EXPECT_EQ(v.ssr.thicknessScale, ppr::gpu::kPprContactThicknessScale);
 }
