@@ -111,6 +111,8 @@ void Renderer::resetTaaHistory(const FrameRequest& req) {
     graph::HistoryStore& history = executor_->history();
     const bool changed = !lastTechnique_.empty() && lastTechnique_ != req.technique;
     lastTechnique_ = req.technique;
+    const bool splitChanged = lastTaaSplit_ != req.settings.taa.split;
+    lastTaaSplit_ = req.settings.taa.split;
     // A new shot starts the jitter sequence again: the same shot renders the same frames, whichever
     // shots came before (compare's rows stay comparable frame by frame).
     if (req.cameraCut) taaFrames_ = 0;
@@ -118,6 +120,7 @@ void Renderer::resetTaaHistory(const FrameRequest& req) {
     for (const char* name : {passes::TaaPass::kHistoryName, passes::TaaPass::kReflectionHistoryName}) {
         if (!history.contains(name)) continue;
         if (changed) history.reset(name, "technique change");
+        if (splitChanged) history.reset(name, "taa_split change");
         if (req.cameraCut) history.reset(name, "camera cut");
     }
 }
@@ -186,6 +189,8 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
         passes::TaaInputs t{hdr, gb.depth, gb.material, std::nullopt};
         const ReflectionDistance* path = board.find<ReflectionDistance>();
         if (path && settings.taa.reproject == Reproject::Virtual) t.reflectedPath = path->image;
+        const ShownReflection* shown = board.find<ShownReflection>();
+        if (shown && settings.taa.split) t.shownReflection = shown->image;
         hdr = taa_->add(g, in, executor_->history(), t);
     }
     board.put(HdrColor{hdr});

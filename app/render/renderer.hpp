@@ -110,6 +110,7 @@ private:
     std::vector<uint32_t> glassOrder_;  // this frame's transparent draws, back to front (reused)
     uint32_t taaFrames_ = 0;            // TAA frames recorded: the jitter sequence's position
     std::string lastTechnique_;         // a technique change drops TAA's history
+    bool lastTaaSplit_ = true;          // so does taa_split: its history holds the surface part alone
 };
 
 }  // namespace ppr::app

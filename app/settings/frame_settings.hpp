@@ -55,6 +55,7 @@ enum class Reproject : uint32_t { Surface, Candidates, Virtual };  // values = t
 struct TaaSettings {         // owner: taa (passes/taa)
     bool enabled;            // jitter + temporal resolve of the HDR frame (off while a debug view is shown)
     Reproject reproject;     // how the reflection's own history is fetched
+    bool split;              // the frame's history holds the surface part; the resolved reflection is added after
 };
 
 struct FrameSettings {

@@ -198,6 +198,10 @@ const std::vector<SettingDecl>& settingDecls() {
                           "surface's and the reflected point's motion with their parallax-scaled forms (candidates), or the virtual "
                           "point's motion with disocclusion rejected by its depth (virtual; every technique gives path lengths: "
                           "pixels without one, misses, fall back to the surface's motion)"),
+        toggle("taa_split", "taa", [](FrameSettings& s) -> bool& { return s.taa.split; }, true,
+               "taa=1: the frame's history holds the surface part alone and the reflection's own resolved history is "
+               "added after, so the frame's TAA never drags a reflection with the surface (0: the frame's history holds the "
+               "whole colour; with reproject=virtual reflector pixels mix in a fetch at the reflection's motion)"),
         number("exposure", "frame", [](FrameSettings& s) -> float& { return s.view.exposure; }, 1, 0.01, 100.0, "exposure multiplier before tonemapping"),
         integer("shadowres", "frame", [](FrameSettings& s) -> uint32_t& { return s.view.shadowRes; }, 2048, 256, 8192,
                 "shadow map resolution (texels per side)"),

@@ -4,6 +4,7 @@
 #include "taa/taa.h"
 #include "taa_comp.h"
 #include "taa_reflection_comp.h"
+#include "taa_split_comp.h"
 
 namespace ppr::passes {
 
@@ -11,6 +12,7 @@ TaaPass::TaaPass(const vk::Context& ctx) : ctx_(ctx) {
     shader::PipelineLayoutDesc layout;
     layout.pushConstantBytes = sizeof(gpu::TaaPush);
     pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(taa_comp), layout, "taa");
+    splitPipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(taa_split_comp), layout, "taa (split)");
     shader::PipelineLayoutDesc reflectionLayout;
     reflectionLayout.pushConstantBytes = sizeof(gpu::TaaReflectionPush);
     reflectionPipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(taa_reflection_comp), reflectionLayout, "taa.reflection");
@@ -47,17 +49,20 @@ graph::ImageHandle TaaPass::add(graph::RenderGraph& g, const FrameInputs& in, gr
     push.reflectionMotion = inputs.reflectedPath ? 1u : 0u;
     const VkSampler nearest = in.samplers->nearestClamp;
     graph::ImageHandle out;
-    ComputePass(g, ctx_, "taa", pipeline_)
-        .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
+    const bool split = inputs.shownReflection.has_value();
+    ComputePass pass(g, ctx_, "taa", split ? splitPipeline_ : pipeline_);
+    pass.uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
         .sampled(inputs.hdr, nearest)
         .sampled(inputs.depth, nearest)
         .sampled(h.previous, in.samplers->linearClamp)
         .storageWrite(h.current, &out)
         .sampled(inputs.material, nearest)
         .hostStorage(in.motion)
-        .sampled(inputs.reflectedPath.value_or(inputs.depth), nearest)  // unread without one (reflectionMotion 0)
-        .push(push)
-        .dispatch(in.extent, gpu::kTaaGroupSize);
+        .sampled(inputs.reflectedPath.value_or(inputs.depth), nearest);  // unread without one (reflectionMotion 0)
+    if (split)
+        pass.sampled(*inputs.shownReflection, nearest)
+            .storageWrite(g.createImage("taa.frame", {in.extent.width, in.extent.height, kHistoryFormat, 1}), &out);
+    pass.push(push).dispatch(in.extent, gpu::kTaaGroupSize);
     return out;
 }
 

@@ -22,6 +22,9 @@ struct TaaInputs {
     // The technique's reflected-path image, when reflector pixels should also fetch their history
     // where their reflection was (reproject=virtual); without it, the surface's motion alone.
     std::optional<graph::ImageHandle> reflectedPath;
+    // taa_split=1: the reflection as the composite blended it (taa.reflection's output). The history then
+    // holds the surface part alone and the output adds the reflection back (taa_split.comp).
+    std::optional<graph::ImageHandle> shownReflection;
 };
 
 class TaaPass {
@@ -32,6 +35,7 @@ public:
 
     explicit TaaPass(const vk::Context& ctx);
     graph::ImageHandle add(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history, const TaaInputs& inputs) const;
+    // Returns the frame's anti-aliased HDR output (the new history itself, unless split).
     // The reflection's own history (taa_reflection.comp): returns the accumulated reflection image for
     // the composite (same class codes in alpha as the technique's).
     graph::ImageHandle addReflection(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history,
@@ -39,7 +43,7 @@ public:
 
 private:
     const vk::Context& ctx_;
-    shader::Pipeline pipeline_, reflectionPipeline_;
+    shader::Pipeline pipeline_, splitPipeline_, reflectionPipeline_;
 };
 
 }  // namespace ppr::passes

@@ -39,17 +39,30 @@ void main() {
         imageStore(outHistory, pix, vec4(0.0));
         return;
     }
-    // Neighbourhood of the reflection alone (pixels with one), compressed YCoCg.
+    // Neighbourhood of the reflection alone (pixels with one), compressed YCoCg; for `virtual`, also the
+    // range of its reflected path lengths.
     vec3 m1 = vec3(0.0), m2 = vec3(0.0);
     float count = 0.0;
+    bool pathRange = pc.hasDistance != 0u && pc.mode == kReprojectVirtual;
+    float shortestPath = 1e30, longestPath = 0.0;
+    bool movingNearby = false;  // a moving draw is reflected here or beside: its trail is disocclusion
     for (int y = -1; y <= 1; ++y)
         for (int x = -1; x <= 1; ++x) {
-            vec4 t = texelFetch(reflectionTex, clamp(pix + ivec2(x, y), ivec2(0), size - 1), 0);
+            ivec2 q = clamp(pix + ivec2(x, y), ivec2(0), size - 1);
+            vec4 t = texelFetch(reflectionTex, q, 0);
             if (t.a == kReflectionNone) continue;
             vec3 c = toYCoCg(compress(t.rgb));
             m1 += c;
             m2 += c * c;
             count += 1.0;
+            if (pathRange) {
+                vec2 p = texelFetch(distanceTex, q, 0).xy;
+                movingNearby = movingNearby || pathMotionSlot(p.y) != 0u;
+                if (p.x > 0.0) {
+                    shortestPath = min(shortestPath, p.x);
+                    longestPath = max(longestPath, p.x);
+                }
+            }
         }
     vec3 mean = m1 / count;
     vec3 sigma = sqrt(max(m2 / count - mean * mean, vec3(0.0)));
@@ -96,7 +109,15 @@ void main() {
         // depth through the bilinear one (no overshoot).
         vec4 history = vec4(sampleCatmullRom(historyTex, historyUv), textureLod(historyTex, historyUv, 0.0).a);
         bool hadReflection = history.a > 0.0;
-        bool disoccluded = expectedW > 0.0 && history.a > kKnownDepth && abs(history.a - expectedW) > kTaaVirtualDepthTolerance * expectedW;
+        // Another surface's history only if its depth lies outside what the neighbourhood reflects (each
+        // neighbour's path scaled to this pixel's ray): on a still reflected silhouette the jitter moves
+        // the pixel's own path from one side to the other every frame, and both sides are its history.
+        // Beside a moving draw's reflection the pixel's own depth decides, as a disocclusion is likely.
+        float perPath = expectedW / dist;
+        bool range = !movingNearby && count > 0.0;
+        float nearest = (range ? min(expectedW, shortestPath * perPath) : expectedW) * (1.0 - kTaaVirtualDepthTolerance);
+        float farthest = (range ? max(expectedW, longestPath * perPath) : expectedW) * (1.0 + kTaaVirtualDepthTolerance);
+        bool disoccluded = expectedW > 0.0 && history.a > kKnownDepth && (history.a < nearest || history.a > farthest);
         if (hadReflection && !disoccluded) {
             vec3 h = clipToBox(toYCoCg(compress(history.rgb)), mean, kTaaClipSigma * sigma + vec3(1e-4));
             resolved = mix(currentY, h, historyFeedback(currentY.x, h.x));

@@ -1,0 +1,156 @@
+// TAA resolve body, compiled twice: taa.comp and taa_split.comp (PPR_TAA_SPLIT).
+// The current (jittered) HDR frame blended with last frame's resolved image, fetched where this
+// pixel's surface was then. A reflector pixel's colour is partly its reflection, which moved with its
+// virtual point, not with the surface, and which taa.reflection has already resolved along that motion:
+// - whole colour (taa.comp): with `reflectionMotion` a reflector pixel's history is the mix, by the
+//   composite's reflection weight (the current colour's alpha), of the fetch at the surface's motion
+//   and the fetch at the reflection's. The new history is also the frame's output.
+// - split (taa_split.comp): the history holds the surface part alone (the colour less weight ×
+//   shown reflection) and, in alpha, the resolved weight; the output adds the resolved weight times
+//   this frame's shown reflection. Nothing of the reflection is reprojected by the surface's motion, and
+//   the weight's own history keeps the reflector's edge anti-aliased.
+#include "common/bindings.glsl"
+#include "common/reflection.h"
+#include "gpu/scene_data.h"
+#include "taa/taa.h"
+#include "taa/taa_color.glsl"
+
+layout(local_size_x = kTaaGroupSize, local_size_y = kTaaGroupSize) in;
+layout(set = 0, binding = 1) uniform sampler2D currentColor;  // nearest
+layout(set = 0, binding = 2) uniform sampler2D depthTex;      // nearest
+layout(set = 0, binding = 3) uniform sampler2D historyColor;  // linear, clamped
+layout(set = 0, binding = 4, rgba16f) uniform writeonly image2D outColor;
+layout(set = 0, binding = 5) uniform sampler2D materialTex;  // G-buffer: alpha = motion slot
+layout(set = 0, binding = 6, scalar) readonly buffer Motions { MotionData motions[]; };
+layout(set = 0, binding = 7) uniform sampler2D pathTex;  // the technique's reflected-path image (reflectionMotion)
+#ifdef PPR_TAA_SPLIT
+layout(set = 0, binding = 8) uniform sampler2D shownReflection;  // common/reflection.h (taa.reflection's output)
+layout(set = 0, binding = 9, rgba16f) uniform writeonly image2D outFrame;  // the frame's output (the history is outColor)
+#endif
+#include "taa/taa_motion.glsl"
+#include "taa/object_motion.glsl"
+#include "taa/reflection_motion.glsl"
+layout(push_constant, scalar) uniform Push { TaaPush pc; };
+
+// The group's pixels and a one-pixel border, loaded once: each pixel reads its 3×3 neighbourhood from
+// here instead of nine colour and nine depth fetches. xyz: compressed YCoCg colour, w: depth; and the
+// colour's alpha, the composite's reflection weight (split: xyz is the surface part).
+const int kTile = int(kTaaGroupSize) + 2;
+shared vec4 tile[kTile * kTile];
+shared float tileReflectionWeight[kTile * kTile];
+#ifdef PPR_TAA_SPLIT
+shared vec3 tileReflection[kTile * kTile];  // the shown reflection where there is one, else 0
+#endif
+
+void main() {
+    ivec2 size = ivec2(frame.screenSize);
+    ivec2 origin = ivec2(gl_WorkGroupID.xy) * int(kTaaGroupSize) - 1;
+    for (uint i = gl_LocalInvocationIndex; i < uint(kTile * kTile); i += kTaaGroupSize * kTaaGroupSize) {
+        ivec2 q = clamp(origin + ivec2(int(i) % kTile, int(i) / kTile), ivec2(0), size - 1);
+        vec4 c = texelFetch(currentColor, q, 0);
+#ifdef PPR_TAA_SPLIT
+        vec4 r = texelFetch(shownReflection, q, 0);
+        if (r.a == kReflectionNone) r.rgb = vec3(0.0);
+        tileReflection[i] = r.rgb;
+        c.rgb -= c.a * r.rgb;  // the composite's mix, less its reflection term (exact for grey Fresnel)
+#endif
+        tile[i] = vec4(toYCoCg(compress(c.rgb)), texelFetch(depthTex, q, 0).r);
+        tileReflectionWeight[i] = c.a;
+    }
+    barrier();
+    ivec2 pix = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(pix, size))) return;
+
+    // Neighbourhood statistics of the current frame, and the nearest depth around the pixel (so that
+    // an edge's pixels follow the foreground's motion, not the background's).
+    vec3 m1 = vec3(0.0), m2 = vec3(0.0);
+#ifdef PPR_TAA_SPLIT
+    float weightMin = 1.0, weightMax = 0.0, brightestWeight = 0.0;
+    vec3 reflection = vec3(0.0);  // the most reflective neighbour's shown reflection
+#endif
+    float nearestDepth = 0.0;  // reverse-Z: larger is nearer
+    ivec2 nearest = ivec2(0);  // where it is (its object's motion is the one taken)
+    ivec2 local = ivec2(gl_LocalInvocationID.xy) + 1;
+    for (int y = -1; y <= 1; ++y)
+        for (int x = -1; x <= 1; ++x) {
+            vec4 t = tile[(local.y + y) * kTile + local.x + x];
+            m1 += t.xyz;
+            m2 += t.xyz * t.xyz;
+#ifdef PPR_TAA_SPLIT
+            int at = (local.y + y) * kTile + local.x + x;
+            float w = tileReflectionWeight[at];
+            weightMin = min(weightMin, w);
+            weightMax = max(weightMax, w);
+            if (w > brightestWeight) {
+                brightestWeight = w;
+                reflection = tileReflection[at];
+            }
+#endif
+            if (t.w > nearestDepth) nearest = ivec2(x, y);
+            nearestDepth = max(nearestDepth, t.w);
+        }
+    vec3 mean = m1 / 9.0;
+    vec3 sigma = sqrt(max(m2 / 9.0 - mean * mean, vec3(0.0)));
+    vec3 currentY = tile[local.y * kTile + local.x].xyz;
+
+    float prevW;
+    uint slot = motionSlotAt(clamp(pix + nearest, ivec2(0), size - 1));
+    vec2 historyUv = previousUvMoving((vec2(pix) + 0.5) * frame.invScreenSize, nearestDepth, slot, prevW);
+    float reflectionWeight = 0.0;  // 0: the surface's fetch alone
+    vec2 reflectionUv = vec2(0.0);
+#ifndef PPR_TAA_SPLIT
+    if (pc.reflectionMotion != 0u) {
+        float w = tileReflectionWeight[local.y * kTile + local.x];
+        vec2 path = w > 0.0 ? texelFetch(pathTex, pix, 0).xy : vec2(0.0);
+        // Only a still reflected point: for a moving one, the mix measured worse than the surface's
+        // fetch alone (docs/temporal.md), and the reflection's own history already follows it.
+        if (path.x > 0.0 && pathMotionSlot(path.y) == 0u) {
+            vec2 uv = (vec2(pix) + 0.5) * frame.invScreenSize;
+            vec3 surface = worldFromDepth(uv, texelFetch(depthTex, pix, 0).r);
+            vec3 view = normalize(surface - frame.cameraPos.xyz);
+            float reflectionW;  // a still reflected point: the tangent plane (normal) plays no part
+            reflectionUv = previousUvOfReflection(uv, surface, view, vec3(0.0), path.x, 0u, reflectionW);
+            if (reflectionW > 0.0 && all(greaterThanEqual(reflectionUv, vec2(0.0))) && all(lessThanEqual(reflectionUv, vec2(1.0))))
+                reflectionWeight = w;
+        }
+    }
+#endif
+    bool onScreen = prevW > 0.0 && all(greaterThanEqual(historyUv, vec2(0.0))) && all(lessThanEqual(historyUv, vec2(1.0)));
+
+    vec3 resolved = currentY;
+#ifdef PPR_TAA_SPLIT
+    float currentWeight = tileReflectionWeight[local.y * kTile + local.x];
+    float resolvedWeight = currentWeight;
+    // A pixel with a reflection adds its own; one beside a reflector (whose history may hold some of
+    // its weight) its most reflective neighbour's.
+    if (currentWeight > 0.0) reflection = tileReflection[local.y * kTile + local.x];
+#endif
+    if (pc.historyValid != 0u && onScreen) {
+        vec3 historyRgb = sampleCatmullRom(historyColor, historyUv);
+        // Where both fetches coincide to rounding (1/1000 pixel: a still view) the mix is the surface's
+        // fetch. Not more: a slow camera's sub-pixel differences add up over the frames.
+        vec2 apart = (reflectionUv - historyUv) * frame.screenSize;
+        if (reflectionWeight > 0.0 && dot(apart, apart) > 1e-6)
+            historyRgb = mix(historyRgb, sampleCatmullRom(historyColor, reflectionUv), reflectionWeight);
+        vec3 history = toYCoCg(compress(historyRgb));
+        history = clipToBox(history, mean, kTaaClipSigma * sigma + vec3(1e-4));
+        float feedback = historyFeedback(currentY.x, history.x);
+        resolved = mix(currentY, history, feedback);
+#ifdef PPR_TAA_SPLIT
+        // The weight is the surface's (Fresnel × reflectance): it follows the surface, clamped to its
+        // neighbourhood as the colour is clipped.
+        float historyWeight = clamp(textureLod(historyColor, historyUv, 0.0).a, weightMin, weightMax);
+        resolvedWeight = mix(currentWeight, historyWeight, feedback);
+#endif
+    }
+    vec3 outRgb = expand(fromYCoCg(resolved));
+    // A non-finite history (never expected) must not live on in every later frame.
+    if (any(isnan(outRgb)) || any(isinf(outRgb))) outRgb = expand(fromYCoCg(currentY));
+#ifdef PPR_TAA_SPLIT
+    if (isnan(resolvedWeight)) resolvedWeight = currentWeight;
+    imageStore(outColor, pix, vec4(outRgb, resolvedWeight));
+    imageStore(outFrame, pix, vec4(outRgb + resolvedWeight * reflection, 1.0));
+#else
+    imageStore(outColor, pix, vec4(outRgb, 1.0));
+#endif
+}
