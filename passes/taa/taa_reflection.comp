@@ -45,7 +45,7 @@ void main() {
     float count = 0.0;
     bool pathRange = pc.hasDistance != 0u && pc.mode == kReprojectVirtual;
     float shortestPath = 1e30, longestPath = 0.0;
-    bool movingNearby = false;  // a moving draw is reflected here or beside: its trail is disocclusion
+    bool movingNearby = false;  // a draw that moved is reflected here or beside: its trail is disocclusion
     for (int y = -1; y <= 1; ++y)
         for (int x = -1; x <= 1; ++x) {
             ivec2 q = clamp(pix + ivec2(x, y), ivec2(0), size - 1);
@@ -57,7 +57,8 @@ void main() {
             count += 1.0;
             if (pathRange) {
                 vec2 p = texelFetch(distanceTex, q, 0).xy;
-                movingNearby = movingNearby || pathMotionSlot(p.y) != 0u;
+                uint s = pathMotionSlot(p.y);  // a slot at rest this frame holds exactly the identity
+                movingNearby = movingNearby || (s != 0u && motions[s].toPrevious != mat4(1.0));
                 if (p.x > 0.0) {
                     shortestPath = min(shortestPath, p.x);
                     longestPath = max(longestPath, p.x);
