@@ -49,10 +49,10 @@ void main() {
         ivec2 q = clamp(origin + ivec2(int(i) % kTile, int(i) / kTile), ivec2(0), size - 1);
         vec4 c = texelFetch(currentColor, q, 0);
 #ifdef PPR_TAA_SPLIT
-        vec4 r = texelFetch(shownReflection, q, 0);
-        if (r.a == kReflectionNone) r.rgb = vec3(0.0);
-        tileReflection[i] = r.rgb;
-        c.rgb -= c.a * r.rgb;  // the composite's mix, less its reflection term (exact for grey Fresnel)
+        // The composite's weight is non-zero exactly where it blended a reflection.
+        vec3 r = c.a > 0.0 ? texelFetch(shownReflection, q, 0).rgb : vec3(0.0);
+        tileReflection[i] = r;
+        c.rgb -= c.a * r;  // the composite's mix, less its reflection term (exact for grey Fresnel)
 #endif
         tile[i] = vec4(toYCoCg(compress(c.rgb)), texelFetch(depthTex, q, 0).r);
         tileReflectionWeight[i] = c.a;
