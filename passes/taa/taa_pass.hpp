@@ -1,6 +1,7 @@
 #pragma once
 // TAA resolve (--set taa=1): the jittered HDR frame + the history image ("taa.color", a graph history
-// resource) → the new history, which is the frame's anti-aliased HDR output. The G-buffer's material
+// resource) → the new history, which is the frame's anti-aliased HDR output (with taa_split=1, the
+// history holds the surface part and the output is a separate image, "taa.frame"). The G-buffer's material
 // target gives each pixel's motion slot (per-object motion of an animated scene's moving draws).
 #include "common/frame_inputs.hpp"
 #include "graph/history.hpp"
@@ -34,8 +35,8 @@ public:
     static constexpr VkFormat kHistoryFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 
     explicit TaaPass(const vk::Context& ctx);
-    graph::ImageHandle add(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history, const TaaInputs& inputs) const;
     // Returns the frame's anti-aliased HDR output (the new history itself, unless split).
+    graph::ImageHandle add(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history, const TaaInputs& inputs) const;
     // The reflection's own history (taa_reflection.comp): returns the accumulated reflection image for
     // the composite (same class codes in alpha as the technique's).
     graph::ImageHandle addReflection(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history,

@@ -114,8 +114,8 @@ void main() {
         // neighbour's path scaled to this pixel's ray): on a still reflected silhouette the jitter moves
         // the pixel's own path from one side to the other every frame, and both sides are its history.
         // Beside a moving draw's reflection the pixel's own depth decides, as a disocclusion is likely.
-        float perPath = expectedW / dist;
-        bool range = !movingNearby && count > 0.0;
+        float perPath = dist > 0.0 ? expectedW / dist : 0.0;
+        bool range = !movingNearby;
         float nearest = (range ? min(expectedW, shortestPath * perPath) : expectedW) * (1.0 - kTaaVirtualDepthTolerance);
         float farthest = (range ? max(expectedW, longestPath * perPath) : expectedW) * (1.0 + kTaaVirtualDepthTolerance);
         bool disoccluded = expectedW > 0.0 && history.a > kKnownDepth && (history.a < nearest || history.a > farthest);
