@@ -96,9 +96,9 @@ void main() {
     float prevW;
     uint slot = motionSlotAt(clamp(pix + nearest, ivec2(0), size - 1));
     vec2 historyUv = previousUvMoving((vec2(pix) + 0.5) * frame.invScreenSize, nearestDepth, slot, prevW);
+#ifndef PPR_TAA_SPLIT
     float reflectionWeight = 0.0;  // 0: the surface's fetch alone
     vec2 reflectionUv = vec2(0.0);
-#ifndef PPR_TAA_SPLIT
     if (pc.reflectionMotion != 0u) {
         float w = tileReflectionWeight[local.y * kTile + local.x];
         vec2 path = w > 0.0 ? texelFetch(pathTex, pix, 0).xy : vec2(0.0);
@@ -127,11 +127,13 @@ void main() {
 #endif
     if (pc.historyValid != 0u && onScreen) {
         vec3 historyRgb = sampleCatmullRom(historyColor, historyUv);
+#ifndef PPR_TAA_SPLIT
         // Where both fetches coincide to rounding (1/1000 pixel: a still view) the mix is the surface's
         // fetch. Not more: a slow camera's sub-pixel differences add up over the frames.
         vec2 apart = (reflectionUv - historyUv) * frame.screenSize;
         if (reflectionWeight > 0.0 && dot(apart, apart) > 1e-6)
             historyRgb = mix(historyRgb, sampleCatmullRom(historyColor, reflectionUv), reflectionWeight);
+#endif
         vec3 history = toYCoCg(compress(historyRgb));
         history = clipToBox(history, mean, kTaaClipSigma * sigma + vec3(1e-4));
         float feedback = historyFeedback(currentY.x, history.x);
