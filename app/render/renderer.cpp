@@ -20,6 +20,7 @@ passes::TaaReflectionInputs taaReflectionInputs(const graph::Blackboard& board, 
     static_assert(uint32_t(Reproject::Surface) == gpu::kReprojectSurface && uint32_t(Reproject::Candidates) == gpu::kReprojectCandidates &&
                   uint32_t(Reproject::Virtual) == gpu::kReprojectVirtual);
     r.mode = static_cast<uint32_t>(settings.taa.reproject);
+    r.average = settings.taa.average;
     return r;
 }
 
@@ -117,7 +118,7 @@ void Renderer::resetTaaHistory(const FrameRequest& req) {
     // shots came before (compare's rows stay comparable frame by frame).
     if (req.cameraCut) taaFrames_ = 0;
     // A resize needs nothing here: the store reallocates and resets a pair whose size changed.
-    for (const char* name : {passes::TaaPass::kHistoryName, passes::TaaPass::kReflectionHistoryName}) {
+    for (const char* name : passes::TaaPass::kHistoryNames) {
         if (!history.contains(name)) continue;
         if (changed) history.reset(name, "technique change");
         if (splitChanged) history.reset(name, "taa_split change");
@@ -160,11 +161,17 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
     board.put(LitColor{lit});
     board.put(ShadowMap{shadowMap});
     TechniqueFrame frame{g, board, *services_, settings, in, gb, lit, shadowMap, slot, req.camera};
+    std::optional<graph::ImageHandle> taaShown, reflectionHistory;  // taa.reflection's outputs
     if (technique) {
         if (std::optional<graph::ImageHandle> reflection = technique->addReflection(frame)) {
             board.put(TechniqueReflection{*reflection});
             board.put(ShownReflection{*reflection});
-            if (taa) board.put(ShownReflection{taa_->addReflection(g, in, executor_->history(), taaReflectionInputs(board, *reflection, gb, settings))});
+            if (taa) {
+                const passes::TaaReflectionOutput out = taa_->addReflection(g, in, executor_->history(), taaReflectionInputs(board, *reflection, gb, settings));
+                board.put(ShownReflection{out.shown});
+                taaShown = out.shown;
+                reflectionHistory = out.history;
+            }
         }
     }
     std::optional<graph::ImageHandle> reference;
@@ -187,10 +194,14 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
     }
     if (taa) {
         passes::TaaInputs t{hdr, gb.depth, gb.material, std::nullopt};
+        t.average = settings.taa.average;
         const ReflectionDistance* path = board.find<ReflectionDistance>();
         if (path && settings.taa.reproject == Reproject::Virtual) t.reflectedPath = path->image;
         const ShownReflection* shown = board.find<ShownReflection>();
-        if (shown && settings.taa.split) t.shownReflection = shown->image;
+        if (shown && settings.taa.split) {
+            t.shownReflection = shown->image;
+            if (shown->image == taaShown) t.reflectionHistory = reflectionHistory;  // not A/B's split of it
+        }
         hdr = taa_->add(g, in, executor_->history(), t);
     }
     board.put(HdrColor{hdr});

@@ -56,6 +56,7 @@ struct TaaSettings {         // owner: taa (passes/taa)
     bool enabled;            // jitter + temporal resolve of the HDR frame (off while a debug view is shown)
     Reproject reproject;     // how the reflection's own history is fetched
     bool split;              // the frame's history holds the surface part; the resolved reflection is added after
+    bool average;            // histories count their frames: equal shares after a reset; a still pixel keeps the jitter cycle's mean
 };
 
 struct FrameSettings {

@@ -202,6 +202,11 @@ const std::vector<SettingDecl>& settingDecls() {
                "taa=1: the frame's history holds the surface part alone and the reflection's own resolved history is "
                "added after, so the frame's TAA never drags a reflection with the surface (0: the frame's history holds the "
                "whole colour; with reproject=virtual reflector pixels mix in a fetch at the reflection's motion)"),
+        toggle("taa_average", "taa", [](FrameSettings& s) -> bool& { return s.taa.average; }, true,
+               "taa=1: each history pixel counts its frames: the first 32 after a cut or a disocclusion get equal shares, "
+               "and a still pixel (history at a texel centre, inside a 2.5-sigma box) averages the 16-frame jitter cycle and "
+               "keeps it until the box moves, so a still view stops flickering (0: the luma-driven feedback of 0.88-0.97 "
+               "alone; switching it on restarts the histories)"),
         number("exposure", "frame", [](FrameSettings& s) -> float& { return s.view.exposure; }, 1, 0.01, 100.0, "exposure multiplier before tonemapping"),
         integer("shadowres", "frame", [](FrameSettings& s) -> uint32_t& { return s.view.shadowRes; }, 2048, 256, 8192,
                 "shadow map resolution (texels per side)"),

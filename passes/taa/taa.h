@@ -8,8 +8,18 @@ PPR_CONST(uint, kTaaGroupSize, 16u)
 // (a large difference is a change the history has not seen yet, so it keeps less of it).
 PPR_CONST(float, kTaaFeedbackMin, 0.88f)
 PPR_CONST(float, kTaaFeedbackMax, 0.97f)
+// taa_average=1: each history pixel counts its frames (a "samples" image beside it). The first
+// kTaaHeldSamples frames after a cut or a disocclusion get equal shares (above that the feedback above
+// keeps more); a still pixel (its history fetched at a texel centre and inside the still clipping box)
+// averages kTaaStillSamples frames, one whole jitter cycle, with equal shares, and then keeps that
+// average until the box no longer holds it: a still view converges and stops flickering.
+PPR_CONST(float, kTaaHeldSamples, 32.0f)
+PPR_CONST(float, kTaaStillSamples, 16.0f)
 // Variance clipping box: mean ± this many standard deviations of the 3×3 neighbourhood (YCoCg).
 PPR_CONST(float, kTaaClipSigma, 1.25f)
+// taa_average=1, a still pixel: its history averages the jitter cycle, which a single jittered frame's
+// neighbourhood spreads around more widely than a moving history's.
+PPR_CONST(float, kTaaStillClipSigma, 2.5f)
 
 // --set reproject: how the reflection's own history is fetched (taa_reflection.comp).
 PPR_CONST(uint, kReprojectSurface, 0u)     // the surface's motion, as a plain TAA
@@ -38,7 +48,10 @@ struct TaaPush {
     // 1: reflector pixels also fetch history where their reflection was (reflection_motion.glsl), mixed
     // in by the composite's reflection weight (reproject=virtual, a technique with reflected paths)
     uint reflectionMotion;
-    uint pad1, pad2;
+    // split + taa_average: reflectionHistory is bound; a pixel without a reflection this frame takes the
+    // one its reflection history kept (a still rim pixel), before a neighbour's
+    uint keptReflection;
+    uint pad2;
 };
 PPR_END
 PPR_SIZE_CHECK(TaaPush, 16);

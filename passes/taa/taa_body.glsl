@@ -1,4 +1,5 @@
-// TAA resolve body, compiled twice: taa.comp and taa_split.comp (PPR_TAA_SPLIT).
+// TAA resolve body, compiled four times: taa.comp, taa_split.comp (PPR_TAA_SPLIT) and their
+// *_average variants (PPR_TAA_AVERAGE, taa_average=1: the history counts its frames, taa_color.glsl).
 // The current (jittered) HDR frame blended with last frame's resolved image, fetched where this
 // pixel's surface was then. A reflector pixel's colour is partly its reflection, which moved with its
 // virtual point, not with the surface, and which taa.reflection has already resolved along that motion:
@@ -26,6 +27,16 @@ layout(set = 0, binding = 7) uniform sampler2D pathTex;  // the technique's refl
 #ifdef PPR_TAA_SPLIT
 layout(set = 0, binding = 8) uniform sampler2D shownReflection;  // common/reflection.h (taa.reflection's output)
 layout(set = 0, binding = 9, rgba16f) uniform writeonly image2D outFrame;  // the frame's output (the history is outColor)
+const int kSamplesBinding = 10;
+#else
+const int kSamplesBinding = 8;
+#endif
+#ifdef PPR_TAA_AVERAGE
+layout(set = 0, binding = kSamplesBinding) uniform sampler2D historySamples;  // what the history holds (taa_color.glsl), linear
+layout(set = 0, binding = kSamplesBinding + 1, rg16f) uniform writeonly image2D outSamples;
+#ifdef PPR_TAA_SPLIT
+layout(set = 0, binding = kSamplesBinding + 2) uniform sampler2D reflectionHistory;  // taa.reflection's new history (pc.keptReflection)
+#endif
 #endif
 #include "taa/taa_motion.glsl"
 #include "taa/object_motion.glsl"
@@ -124,6 +135,17 @@ void main() {
     // A pixel with a reflection adds its own; one beside a reflector (whose history may hold some of
     // its weight) its most reflective neighbour's.
     if (currentWeight > 0.0) reflection = tileReflection[local.y * kTile + local.x];
+#ifdef PPR_TAA_AVERAGE
+    // One the jitter took off a reflector's rim this frame: the reflection its history kept (alpha: a
+    // depth, so one is there), which does not change with the jitter as the neighbours' do.
+    else if (pc.keptReflection != 0u) {
+        vec4 kept = texelFetch(reflectionHistory, pix, 0);
+        if (kept.a > 0.0) reflection = kept.rgb;
+    }
+#endif
+#endif
+#ifdef PPR_TAA_AVERAGE
+    vec2 samples = kFirstSamples;  // what the new history holds (taa_color.glsl)
 #endif
     if (pc.historyValid != 0u && onScreen) {
         vec3 historyRgb = sampleCatmullRom(historyColor, historyUv);
@@ -135,16 +157,31 @@ void main() {
             historyRgb = mix(historyRgb, sampleCatmullRom(historyColor, reflectionUv), reflectionWeight);
 #endif
         vec3 history = toYCoCg(compress(historyRgb));
+#ifdef PPR_TAA_AVERAGE
+        HistoryBlend blend = blendHistory(currentY, history, mean, sigma, historyUv, historySamples);
+        history = blend.history;
+        float feedback = blend.feedback;
+        samples = blend.samples;
+#else
         history = clipToBox(history, mean, kTaaClipSigma * sigma + vec3(1e-4));
         float feedback = historyFeedback(currentY.x, history.x);
+#endif
         resolved = mix(currentY, history, feedback);
 #ifdef PPR_TAA_SPLIT
         // The weight is the surface's (Fresnel × reflectance): it follows the surface, clamped to its
         // neighbourhood as the colour is clipped.
-        float historyWeight = clamp(textureLod(historyColor, historyUv, 0.0).a, weightMin, weightMax);
+        float historyWeight = textureLod(historyColor, historyUv, 0.0).a;
+#ifdef PPR_TAA_AVERAGE
+        // Not in a still run: there the weights the jitter gives the rim are what the history averages.
+        if (samples.y == 0.0)
+#endif
+            historyWeight = clamp(historyWeight, weightMin, weightMax);
         resolvedWeight = mix(currentWeight, historyWeight, feedback);
 #endif
     }
+#ifdef PPR_TAA_AVERAGE
+    imageStore(outSamples, pix, vec4(samples, 0.0, 0.0));
+#endif
     vec3 outRgb = expand(fromYCoCg(resolved));
     // A non-finite history (never expected) must not live on in every later frame.
     if (any(isnan(outRgb)) || any(isinf(outRgb))) outRgb = expand(fromYCoCg(currentY));

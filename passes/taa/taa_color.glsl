@@ -15,6 +15,13 @@ float historyFeedback(float currentY, float historyY) {
     return mix(kTaaFeedbackMin, kTaaFeedbackMax, agreement * agreement);
 }
 
+// True where the history is fetched at a texel centre, to rounding: nothing moved there (a still
+// camera over a still surface), so the history is that texel, unfiltered.
+bool atTexelCentre(vec2 uv) {
+    vec2 pos = uv * frame.screenSize - 0.5;
+    return all(lessThan(abs(pos - round(pos)), vec2(1.0 / 512.0)));
+}
+
 // Moves `history` toward the box's centre until it lies inside the box (per-axis extents).
 vec3 clipToBox(vec3 history, vec3 center, vec3 extents) {
     vec3 offset = history - center;
@@ -23,6 +30,32 @@ vec3 clipToBox(vec3 history, vec3 center, vec3 extents) {
     return largest > 1.0 ? center + offset / largest : history;
 }
 
+// taa_average=1 (the *_average shader variants): the history's frames, counted beside it (its
+// "samples" image, x: frames held, y: consecutive still frames). A new history holds one frame, which
+// may start a still run.
+const vec2 kFirstSamples = vec2(1.0);
+
+struct HistoryBlend {
+    vec3 history;    // clipped, compressed YCoCg: the new history is mix(current, history, feedback)
+    float feedback;  // the history's share
+    vec2 samples;    // what the new history holds
+};
+
+// How to blend the current frame's YCoCg with the history fetched at `historyUv` (both compressed
+// YCoCg): the history clipped to the neighbourhood's variance box (mean ± k·sigma), and its share. The
+// first kTaaHeldSamples frames of a history get equal shares; a still pixel (history at a texel centre,
+// inside a wider box) averages its last kTaaStillSamples frames, one whole jitter cycle, and then keeps
+// them until the box no longer holds them.
+HistoryBlend blendHistory(vec3 currentY, vec3 historyY, vec3 mean, vec3 sigma, vec2 historyUv, sampler2D samplesTex) {
+    bool still = atTexelCentre(historyUv);
+    vec3 h = clipToBox(historyY, mean, (still ? kTaaStillClipSigma : kTaaClipSigma) * sigma + vec3(1e-4));
+    bool stillRun = still && h == historyY;  // nothing clipped
+    vec2 held = textureLod(samplesTex, historyUv, 0.0).xy;  // bilinear, as the history (a texel centre: that texel)
+    float feedback = min(historyFeedback(currentY.x, h.x), held.x / (held.x + 1.0));
+    if (stillRun) feedback = held.y >= kTaaStillSamples ? 1.0 : max(feedback, held.y / (held.y + 1.0));
+    vec2 samples = vec2(min(held.x + 1.0, kTaaHeldSamples), stillRun ? min(held.y + 1.0, kTaaStillSamples) : 0.0);
+    return HistoryBlend(h, feedback, samples);
+}
 
 // Catmull-Rom history sample. Per axis the two middle weights share one bilinear tap placed between
 // their texels (exact, both being positive); of the 3×3 taps that leaves, the four corners carry the
@@ -32,7 +65,7 @@ vec3 sampleCatmullRom(sampler2D history, vec2 uv) {
     vec2 size = frame.screenSize;
     vec2 pos = uv * size - 0.5;
     vec2 nearest = round(pos);
-    if (all(lessThan(abs(pos - nearest), vec2(1.0 / 512.0))))
+    if (all(lessThan(abs(pos - nearest), vec2(1.0 / 512.0))))  // atTexelCentre(uv)
         return texelFetch(history, clamp(ivec2(nearest), ivec2(0), ivec2(size) - 1), 0).rgb;
     vec2 base = floor(pos);
     vec2 f = pos - base;

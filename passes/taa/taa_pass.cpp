@@ -2,8 +2,11 @@
 
 #include "common/compute_pass.hpp"
 #include "taa/taa.h"
+#include "taa_average_comp.h"
 #include "taa_comp.h"
+#include "taa_reflection_average_comp.h"
 #include "taa_reflection_comp.h"
+#include "taa_split_average_comp.h"
 #include "taa_split_comp.h"
 
 namespace ppr::passes {
@@ -11,24 +14,30 @@ namespace ppr::passes {
 TaaPass::TaaPass(const vk::Context& ctx) : ctx_(ctx) {
     shader::PipelineLayoutDesc layout;
     layout.pushConstantBytes = sizeof(gpu::TaaPush);
-    pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(taa_comp), layout, "taa");
-    splitPipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(taa_split_comp), layout, "taa (split)");
+    pipelines_[0][0] = shader::createComputePipeline(ctx, PPR_SPIRV(taa_comp), layout, "taa");
+    pipelines_[0][1] = shader::createComputePipeline(ctx, PPR_SPIRV(taa_average_comp), layout, "taa (average)");
+    pipelines_[1][0] = shader::createComputePipeline(ctx, PPR_SPIRV(taa_split_comp), layout, "taa (split)");
+    pipelines_[1][1] = shader::createComputePipeline(ctx, PPR_SPIRV(taa_split_average_comp), layout, "taa (split, average)");
     shader::PipelineLayoutDesc reflectionLayout;
     reflectionLayout.pushConstantBytes = sizeof(gpu::TaaReflectionPush);
-    reflectionPipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(taa_reflection_comp), reflectionLayout, "taa.reflection");
+    reflectionPipelines_[0] = shader::createComputePipeline(ctx, PPR_SPIRV(taa_reflection_comp), reflectionLayout, "taa.reflection");
+    reflectionPipelines_[1] =
+        shader::createComputePipeline(ctx, PPR_SPIRV(taa_reflection_average_comp), reflectionLayout, "taa.reflection (average)");
 }
 
-graph::ImageHandle TaaPass::addReflection(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history,
+TaaReflectionOutput TaaPass::addReflection(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history,
                                           const TaaReflectionInputs& inputs) const {
     const graph::HistoryImage h = g.history(history, kReflectionHistoryName, {in.extent.width, in.extent.height, kHistoryFormat, 1});
+    std::optional<graph::HistoryImage> samples;
+    if (inputs.average) samples = g.history(history, kReflectionSamplesName, {in.extent.width, in.extent.height, kSamplesFormat, 1});
     gpu::TaaReflectionPush push{};
-    push.historyValid = h.previousValid ? 1u : 0u;
+    push.historyValid = h.previousValid && (!samples || samples->previousValid) ? 1u : 0u;
     push.mode = inputs.mode;
     push.hasDistance = inputs.distance ? 1u : 0u;
     const VkSampler nearest = in.samplers->nearestClamp;
     graph::ImageHandle shown, written;
-    ComputePass(g, ctx_, "taa.reflection", reflectionPipeline_)
-        .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
+    ComputePass pass(g, ctx_, "taa.reflection", reflectionPipelines_[inputs.average ? 1 : 0]);
+    pass.uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
         .sampled(inputs.reflection, nearest)
         .sampled(inputs.depth, nearest)
         .sampled(inputs.normal, nearest)
@@ -36,21 +45,23 @@ graph::ImageHandle TaaPass::addReflection(graph::RenderGraph& g, const FrameInpu
         .sampled(h.previous, in.samplers->linearClamp)
         .storageWrite(g.createImage("taa.reflection.shown", {in.extent.width, in.extent.height, kHistoryFormat, 1}), &shown)
         .storageWrite(h.current, &written)
-        .hostStorage(in.motion)  // a moving reflected point's motion slot (the path image's tag)
-        .push(push)
-        .dispatch(in.extent, gpu::kTaaGroupSize);
-    return shown;
+        .hostStorage(in.motion);  // a moving reflected point's motion slot (the path image's tag)
+    if (samples) pass.sampled(samples->previous, in.samplers->linearClamp).storageWrite(samples->current, nullptr);
+    pass.push(push).dispatch(in.extent, gpu::kTaaGroupSize);
+    return {shown, written};
 }
 
 graph::ImageHandle TaaPass::add(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history, const TaaInputs& inputs) const {
     const graph::HistoryImage h = g.history(history, kHistoryName, {in.extent.width, in.extent.height, kHistoryFormat, 1});
+    std::optional<graph::HistoryImage> samples;
+    if (inputs.average) samples = g.history(history, kSamplesName, {in.extent.width, in.extent.height, kSamplesFormat, 1});
     gpu::TaaPush push{};
-    push.historyValid = h.previousValid ? 1u : 0u;
+    push.historyValid = h.previousValid && (!samples || samples->previousValid) ? 1u : 0u;
     push.reflectionMotion = inputs.reflectedPath ? 1u : 0u;
     const VkSampler nearest = in.samplers->nearestClamp;
     graph::ImageHandle out;
     const bool split = inputs.shownReflection.has_value();
-    ComputePass pass(g, ctx_, "taa", split ? splitPipeline_ : pipeline_);
+    ComputePass pass(g, ctx_, "taa", pipelines_[split ? 1 : 0][inputs.average ? 1 : 0]);
     pass.uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
         .sampled(inputs.hdr, nearest)
         .sampled(inputs.depth, nearest)
@@ -62,6 +73,11 @@ graph::ImageHandle TaaPass::add(graph::RenderGraph& g, const FrameInputs& in, gr
     if (split)
         pass.sampled(*inputs.shownReflection, nearest)
             .storageWrite(g.createImage("taa.frame", {in.extent.width, in.extent.height, kHistoryFormat, 1}), &out);
+    if (samples) {
+        pass.sampled(samples->previous, in.samplers->linearClamp).storageWrite(samples->current, nullptr);
+        if (split) pass.sampled(inputs.reflectionHistory.value_or(inputs.depth), nearest);  // unread without one (pc.keptReflection 0)
+    }
+    push.keptReflection = split && samples && inputs.reflectionHistory ? 1u : 0u;
     pass.push(push).dispatch(in.extent, gpu::kTaaGroupSize);
     return out;
 }

@@ -15,6 +15,7 @@ struct TaaReflectionInputs {
     std::optional<graph::ImageHandle> distance;  // reflected path lengths (x), when the technique gives them
     graph::ImageHandle depth, normal;            // G-buffer
     uint32_t mode = 0;                           // taa.h kReproject*
+    bool average = true;                         // taa_average (taa.h kTaaStillSamples)
 };
 
 struct TaaInputs {
@@ -26,25 +27,40 @@ struct TaaInputs {
     // taa_split=1: the reflection as the composite blended it (taa.reflection's output). The history then
     // holds the surface part alone and the output adds the reflection back (taa_split.comp).
     std::optional<graph::ImageHandle> shownReflection;
+    // With shownReflection and average: taa.reflection's new history, whose kept reflections give a
+    // still pixel off a reflector's rim this frame (the jitter's doing) its own reflection.
+    std::optional<graph::ImageHandle> reflectionHistory;
+    bool average = true;  // taa_average (taa.h kTaaStillSamples)
+};
+
+struct TaaReflectionOutput {
+    graph::ImageHandle shown;    // for the composite (the technique's class codes in alpha)
+    graph::ImageHandle history;  // the new history (alpha: the virtual point's depth)
 };
 
 class TaaPass {
 public:
     static constexpr const char* kHistoryName = "taa.color";
     static constexpr const char* kReflectionHistoryName = "taa.reflection";
+    // How many frames each history pixel holds, beside each history (taa_average).
+    static constexpr const char* kSamplesName = "taa.color.samples";
+    static constexpr const char* kReflectionSamplesName = "taa.reflection.samples";
+    static constexpr const char* kHistoryNames[] = {kHistoryName, kReflectionHistoryName, kSamplesName, kReflectionSamplesName};
     static constexpr VkFormat kHistoryFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+    static constexpr VkFormat kSamplesFormat = VK_FORMAT_R16G16_SFLOAT;
 
     explicit TaaPass(const vk::Context& ctx);
     // Returns the frame's anti-aliased HDR output (the new history itself, unless split).
     graph::ImageHandle add(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history, const TaaInputs& inputs) const;
-    // The reflection's own history (taa_reflection.comp): returns the accumulated reflection image for
-    // the composite (same class codes in alpha as the technique's).
-    graph::ImageHandle addReflection(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history,
+    // The reflection's own history (taa_reflection*.comp): the accumulated reflection image for the
+    // composite (same class codes in alpha as the technique's) and the new history.
+    TaaReflectionOutput addReflection(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history,
                                      const TaaReflectionInputs& inputs) const;
 
 private:
     const vk::Context& ctx_;
-    shader::Pipeline pipeline_, splitPipeline_, reflectionPipeline_;
+    shader::Pipeline pipelines_[2][2];        // [split][average]: taa.comp, taa_average.comp, taa_split*.comp
+    shader::Pipeline reflectionPipelines_[2];  // [average]
 };
 
 }  // namespace ppr::passes

@@ -155,7 +155,8 @@ TEST(Animation, ReflectionHistoryFollowsTheMovingObject) {
     f.headless->settings().apply("normalmap=off");
     // The least gain over `surface` (dB). The exact references reflect every point of the ball; the
     // screen-space techniques only the part the camera sees, so they gain less. Measured on lavapipe
-    // with the slot and taa_split=1: planar +4.1, raytraced +4.1, ssr-hiz +1.1, ppr +0.04 (with
+    // with the slot, taa_split=1 and taa_average=1: planar +3.9, raytraced +3.9, ssr-hiz +1.7, ppr 0.0
+    // (taa_average=0: planar +4.1, raytraced +4.1, ssr-hiz +1.1, ppr +0.04; with
     // taa_split=0 +2.4, +2.4, +0.9, +0.3: there the frame's TAA smeared `surface`'s reflection a second
     // time, and PPR, which reflects only the ball's visible side, gains least); without the slot +0.4,
     // +0.4, +0.4, 0.0. PPR's bound says only that `virtual` loses nothing.

@@ -1,0 +1,167 @@
+// The reflection's own history (--set taa=1): the technique's reflection image blended with last
+// frame's accumulated reflection, fetched by --set reproject (taa.h kReproject*), before the composite.
+// Compiled as taa_reflection.comp and taa_reflection_average.comp (PPR_TAA_AVERAGE, taa_average=1: the
+// history counts its frames, taa_color.glsl).
+// The history's alpha holds the view depth of each pixel's virtual point (the reflected point mirrored
+// through the reflector, on the pixel's view ray at the reflected path's length), so that `virtual`
+// can tell a disoccluded history from its own, as a depth-history reprojection would.
+// A reflected point on a moving draw (its motion slot in the path image's tag) is carried back to
+// where that draw was last frame before it is mirrored, so a moving object's reflection follows it.
+#include "common/bindings.glsl"
+#include "common/reflection.h"
+#include "gpu/scene_data.h"
+#include "taa/taa.h"
+#include "taa/taa_color.glsl"
+#include "taa/taa_motion.glsl"
+
+layout(local_size_x = kTaaGroupSize, local_size_y = kTaaGroupSize) in;
+layout(set = 0, binding = 1) uniform sampler2D reflectionTex;  // common/reflection.h, nearest
+layout(set = 0, binding = 2) uniform sampler2D depthTex;
+layout(set = 0, binding = 3) uniform sampler2D normalTex;
+layout(set = 0, binding = 4) uniform sampler2D distanceTex;    // reflected-path image (common/reflection.h)
+layout(set = 0, binding = 5) uniform sampler2D historyTex;     // linear, clamped
+layout(set = 0, binding = 6, rgba16f) uniform writeonly image2D outShown;
+layout(set = 0, binding = 7, rgba16f) uniform writeonly image2D outHistory;
+layout(set = 0, binding = 8, scalar) readonly buffer Motions { MotionData motions[]; };
+#ifdef PPR_TAA_AVERAGE
+layout(set = 0, binding = 9) uniform sampler2D historySamples;  // what the history holds (taa_color.glsl), linear
+layout(set = 0, binding = 10, rg16f) uniform writeonly image2D outSamples;
+#endif
+#include "taa/reflection_motion.glsl"
+layout(push_constant, scalar) uniform Push { TaaReflectionPush pc; };
+
+// A history texel with alpha below this had no reflection, or one of unknown depth.
+const float kKnownDepth = 1e-2;
+
+void main() {
+    ivec2 pix = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 size = ivec2(frame.screenSize);
+    if (any(greaterThanEqual(pix, size))) return;
+    vec4 current = texelFetch(reflectionTex, pix, 0);
+    if (current.a == kReflectionNone) {
+        imageStore(outShown, pix, current);
+#ifdef PPR_TAA_AVERAGE
+        // A still pixel that the jitter takes off a reflector's rim keeps its reflection's history (and
+        // its still run) for the frames that bring the reflection back.
+        // The counts are read first, being half the history's size: a history that holds frames (x > 0)
+        // holds a reflection.
+        vec4 kept = vec4(0.0);
+        vec2 keptSamples = texelFetch(historySamples, pix, 0).xy;
+        if (pc.historyValid != 0u && keptSamples.x > 0.0) {
+            float prevW;
+            vec2 historyUv = previousUv((vec2(pix) + 0.5) * frame.invScreenSize, texelFetch(depthTex, pix, 0).r, prevW);
+            if (prevW > 0.0 && atTexelCentre(historyUv)) kept = texelFetch(historyTex, pix, 0);
+        }
+        if (kept.a <= 0.0) keptSamples = vec2(0.0);
+        imageStore(outHistory, pix, kept);
+        imageStore(outSamples, pix, vec4(keptSamples, 0.0, 0.0));
+#else
+        imageStore(outHistory, pix, vec4(0.0));
+#endif
+        return;
+    }
+    // Neighbourhood of the reflection alone (pixels with one), compressed YCoCg; for `virtual`, also the
+    // range of its reflected path lengths.
+    vec3 m1 = vec3(0.0), m2 = vec3(0.0);
+    float count = 0.0;
+    bool pathRange = pc.hasDistance != 0u && pc.mode == kReprojectVirtual;
+    float shortestPath = 1e30, longestPath = 0.0;
+    bool movingNearby = false;  // a draw that moved is reflected here or beside: its trail is disocclusion
+    for (int y = -1; y <= 1; ++y)
+        for (int x = -1; x <= 1; ++x) {
+            ivec2 q = clamp(pix + ivec2(x, y), ivec2(0), size - 1);
+            vec4 t = texelFetch(reflectionTex, q, 0);
+            if (t.a == kReflectionNone) continue;
+            vec3 c = toYCoCg(compress(t.rgb));
+            m1 += c;
+            m2 += c * c;
+            count += 1.0;
+            if (pathRange) {
+                vec2 p = texelFetch(distanceTex, q, 0).xy;
+                uint s = pathMotionSlot(p.y);  // a slot at rest this frame holds exactly the identity
+                movingNearby = movingNearby || (s != 0u && motions[s].toPrevious != mat4(1.0));
+                if (p.x > 0.0) {
+                    shortestPath = min(shortestPath, p.x);
+                    longestPath = max(longestPath, p.x);
+                }
+            }
+        }
+    vec3 mean = m1 / count;
+    vec3 sigma = sqrt(max(m2 / count - mean * mean, vec3(0.0)));
+    vec3 currentY = toYCoCg(compress(current.rgb));
+
+    vec2 uv = (vec2(pix) + 0.5) * frame.invScreenSize;
+    float depth = texelFetch(depthTex, pix, 0).r;
+    float prevW;
+    vec2 historyUv = previousUv(uv, depth, prevW);
+    vec2 path = pc.hasDistance != 0u ? texelFetch(distanceTex, pix, 0).xy : vec2(0.0);
+    float dist = path.x;
+    uint slot = pathMotionSlot(path.y);
+    vec3 surface = worldFromDepth(uv, depth);
+    vec3 view = normalize(surface - frame.cameraPos.xyz);
+    vec4 virtualPoint = vec4(frame.cameraPos.xyz + view * dist, 1.0);
+    vec3 n = normalize(texelFetch(normalTex, pix, 0).xyz);
+    float expectedW = 0.0;  // virtual: the view depth last frame's history should hold there
+    if (dist > 0.0 && pc.mode == kReprojectVirtual) {
+        historyUv = previousUvOfReflection(uv, surface, view, n, dist, slot, prevW);
+        expectedW = prevW;
+    } else if (dist > 0.0 && pc.mode == kReprojectCandidates) {
+        // The seed note's candidates: the motion at the incidence (the surface) and at the intersection
+        // (the reflected point, where it is seen on screen, moved with its draw), each also
+        // parallax-scaled; the smallest wins.
+        vec3 reflected = reflectedPoint(surface, view, n, dist);
+        vec3 reflectedBefore = pointBefore(reflected, slot);
+        vec4 clip = frame.viewProj * vec4(reflected, 1.0);
+        vec2 reflectedUv = clip.xy / clip.w * 0.5 + 0.5;
+        float reflectedW;
+        vec2 atIntersection = previousUvOfPoint(reflectedUv, vec4(reflectedBefore, 1.0), reflectedW) - reflectedUv;
+        vec2 atIncidence = historyUv - uv;
+        float parallax = clamp(1.0 - dist * kTaaParallaxPerMetre, 0.0, 1.0);
+        vec2 best = atIncidence;
+        vec2 others[3] = vec2[3](atIntersection, atIncidence * parallax, atIntersection * parallax);
+        for (int i = 0; i < 3; ++i)
+            if (dot(others[i], others[i]) < dot(best, best)) best = others[i];
+        historyUv = uv + best;
+    }
+    bool onScreen = prevW > 0.0 && all(greaterThanEqual(historyUv, vec2(0.0))) && all(lessThanEqual(historyUv, vec2(1.0)));
+
+    vec3 resolved = currentY;
+#ifdef PPR_TAA_AVERAGE
+    vec2 samples = kFirstSamples;  // what the new history holds (taa_color.glsl)
+#endif
+    if (pc.historyValid != 0u && onScreen) {
+        // Colour through the bicubic filter (a bilinear one blurs a little more every frame); the stored
+        // depth through the bilinear one (no overshoot).
+        vec4 history = vec4(sampleCatmullRom(historyTex, historyUv), textureLod(historyTex, historyUv, 0.0).a);
+        bool hadReflection = history.a > 0.0;
+        // Another surface's history only if its depth lies outside what the neighbourhood reflects (each
+        // neighbour's path scaled to this pixel's ray): on a still reflected silhouette the jitter moves
+        // the pixel's own path from one side to the other every frame, and both sides are its history.
+        // Beside a moving draw's reflection the pixel's own depth decides, as a disocclusion is likely.
+        float perPath = dist > 0.0 ? expectedW / dist : 0.0;
+        bool range = !movingNearby;
+        float nearest = (range ? min(expectedW, shortestPath * perPath) : expectedW) * (1.0 - kTaaVirtualDepthTolerance);
+        float farthest = (range ? max(expectedW, longestPath * perPath) : expectedW) * (1.0 + kTaaVirtualDepthTolerance);
+        bool disoccluded = expectedW > 0.0 && history.a > kKnownDepth && (history.a < nearest || history.a > farthest);
+        if (hadReflection && !disoccluded) {
+#ifdef PPR_TAA_AVERAGE
+            HistoryBlend blend = blendHistory(currentY, toYCoCg(compress(history.rgb)), mean, sigma, historyUv, historySamples);
+            vec3 h = blend.history;
+            float feedback = blend.feedback;
+            samples = blend.samples;
+#else
+            vec3 h = clipToBox(toYCoCg(compress(history.rgb)), mean, kTaaClipSigma * sigma + vec3(1e-4));
+            float feedback = historyFeedback(currentY.x, h.x);
+#endif
+            resolved = mix(currentY, h, feedback);
+        }
+    }
+    vec3 rgb = expand(fromYCoCg(resolved));
+    if (any(isnan(rgb)) || any(isinf(rgb))) rgb = current.rgb;
+#ifdef PPR_TAA_AVERAGE
+    imageStore(outSamples, pix, vec4(samples, 0.0, 0.0));
+#endif
+    imageStore(outShown, pix, vec4(rgb, current.a));  // the class code stays the technique's
+    float currentW = (frame.viewProj * virtualPoint).w;
+    imageStore(outHistory, pix, vec4(rgb, dist > 0.0 ? max(currentW, 2.0 * kKnownDepth) : kKnownDepth * 0.5));
+}
