@@ -135,14 +135,6 @@ void main() {
     // A pixel with a reflection adds its own; one beside a reflector (whose history may hold some of
     // its weight) its most reflective neighbour's.
     if (currentWeight > 0.0) reflection = tileReflection[local.y * kTile + local.x];
-#ifdef PPR_TAA_AVERAGE
-    // One the jitter took off a reflector's rim this frame: the reflection its history kept (alpha: a
-    // depth, so one is there), which does not change with the jitter as the neighbours' do.
-    else if (pc.keptReflection != 0u) {
-        vec4 kept = texelFetch(reflectionHistory, pix, 0);
-        if (kept.a > 0.0) reflection = kept.rgb;
-    }
-#endif
 #endif
 #ifdef PPR_TAA_AVERAGE
     vec2 samples = kFirstSamples;  // what the new history holds (taa_color.glsl)
@@ -187,6 +179,15 @@ void main() {
     if (any(isnan(outRgb)) || any(isinf(outRgb))) outRgb = expand(fromYCoCg(currentY));
 #ifdef PPR_TAA_SPLIT
     if (isnan(resolvedWeight)) resolvedWeight = currentWeight;
+#ifdef PPR_TAA_AVERAGE
+    // One the jitter took off a reflector's rim this frame, whose history holds some weight: the
+    // reflection its reflection history kept (alpha: a depth, so one is there), which does not change
+    // with the jitter as the neighbours' do. Read only there: elsewhere it would be multiplied by 0.
+    if (currentWeight == 0.0 && resolvedWeight > 0.0 && pc.keptReflection != 0u) {
+        vec4 kept = texelFetch(reflectionHistory, pix, 0);
+        if (kept.a > 0.0) reflection = kept.rgb;
+    }
+#endif
     imageStore(outColor, pix, vec4(outRgb, resolvedWeight));
     imageStore(outFrame, pix, vec4(outRgb + resolvedWeight * reflection, 1.0));
 #else
