@@ -21,7 +21,7 @@ PPR_CONST(float, kTaaClipSigma, 1.25f)
 // neighbourhood spreads around more widely than a moving history's.
 PPR_CONST(float, kTaaStillClipSigma, 2.5f)
 
-// --set reproject: how the reflection's own history is fetched (taa_reflection.comp).
+// --set reproject: how the reflection's own history is fetched (taa_reflection_body.glsl).
 PPR_CONST(uint, kReprojectSurface, 0u)     // the surface's motion, as a plain TAA
 PPR_CONST(uint, kReprojectCandidates, 1u)  // the smallest of the surface's and reflected point's motion, parallax-scaled
 PPR_CONST(uint, kReprojectVirtual, 2u)     // the virtual point's motion (exact for planar reflectors)

@@ -2,7 +2,8 @@
 // TAA resolve (--set taa=1): the jittered HDR frame + the history image ("taa.color", a graph history
 // resource) → the new history, which is the frame's anti-aliased HDR output (with taa_split=1, the
 // history holds the surface part and the output is a separate image, "taa.frame"). The G-buffer's material
-// target gives each pixel's motion slot (per-object motion of an animated scene's moving draws).
+// target gives each pixel's motion slot (per-object motion of an animated scene's moving draws). With
+// taa_average=1 each history has its frame counts beside it ("*.samples", taa_color.glsl blendHistory).
 #include "common/frame_inputs.hpp"
 #include "graph/history.hpp"
 
