@@ -64,9 +64,7 @@ HistoryBlend blendHistory(vec3 currentY, vec3 historyY, vec3 mean, vec3 sigma, v
 vec3 sampleCatmullRom(sampler2D history, vec2 uv) {
     vec2 size = frame.screenSize;
     vec2 pos = uv * size - 0.5;
-    vec2 nearest = round(pos);
-    if (all(lessThan(abs(pos - nearest), vec2(1.0 / 512.0))))  // atTexelCentre(uv)
-        return texelFetch(history, clamp(ivec2(nearest), ivec2(0), ivec2(size) - 1), 0).rgb;
+    if (atTexelCentre(uv)) return texelFetch(history, clamp(ivec2(round(pos)), ivec2(0), ivec2(size) - 1), 0).rgb;
     vec2 base = floor(pos);
     vec2 f = pos - base;
     vec2 w0 = f * (-0.5 + f * (1.0 - 0.5 * f));
