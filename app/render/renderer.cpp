@@ -195,6 +195,7 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
     if (taa) {
         passes::TaaInputs t{hdr, gb.depth, gb.material, std::nullopt};
         t.average = settings.taa.average;
+        t.motionCap = settings.taa.motionCap;
         const ReflectionDistance* path = board.find<ReflectionDistance>();
         if (path && settings.taa.reproject == Reproject::Virtual) t.reflectedPath = path->image;
         const ShownReflection* shown = board.find<ShownReflection>();

@@ -57,6 +57,7 @@ struct TaaSettings {         // owner: taa (passes/taa)
     Reproject reproject;     // how the reflection's own history is fetched
     bool split;              // the frame's history holds the surface part; the resolved reflection is added after
     bool average;            // histories count their frames: equal shares after a reset; a still pixel keeps the jitter cycle's mean
+    bool motionCap;          // with average: the frame's history keeps less of itself where it was fetched between texels
 };
 
 struct FrameSettings {

@@ -15,6 +15,11 @@ PPR_CONST(float, kTaaFeedbackMax, 0.97f)
 // average until the box no longer holds it: a still view converges and stops flickering.
 PPR_CONST(float, kTaaHeldSamples, 32.0f)
 PPR_CONST(float, kTaaStillSamples, 16.0f)
+// taa_motion_cap=1 (with taa_average=1): the frame's history keeps at most 1 − this × 4f(1 − f) of itself, f being how far
+// between texels it was fetched (the larger axis). Each fetch between texels softens the history a
+// little (Catmull-Rom only partly restores its detail), and at a feedback near 0.97 the softening of
+// a dozen frames adds up; a still pixel (f = 0) and whole-pixel motion keep the feedback.
+PPR_CONST(float, kTaaMotionCap, 0.3f)
 // Variance clipping box: mean ± this many standard deviations of the 3×3 neighbourhood (YCoCg).
 PPR_CONST(float, kTaaClipSigma, 1.25f)
 // taa_average=1, a still pixel: its history averages the jitter cycle, which a single jittered frame's
@@ -51,7 +56,7 @@ struct TaaPush {
     // split + taa_average: reflectionHistory is bound; a pixel without a reflection this frame takes the
     // one its reflection history kept (a still rim pixel), before a neighbour's
     uint keptReflection;
-    uint pad2;
+    float motionCap;  // taa_motion_cap with taa_average: kTaaMotionCap, or 0 (off: the feedback alone)
 };
 PPR_END
 PPR_SIZE_CHECK(TaaPush, 16);

@@ -150,7 +150,7 @@ void main() {
 #endif
         vec3 history = toYCoCg(compress(historyRgb));
 #ifdef PPR_TAA_AVERAGE
-        HistoryBlend blend = blendHistory(currentY, history, mean, sigma, historyUv, historySamples);
+        HistoryBlend blend = blendHistory(currentY, history, mean, sigma, historyUv, historySamples, motionFeedbackCap(historyUv, pc.motionCap));
         history = blend.history;
         float feedback = blend.feedback;
         samples = blend.samples;

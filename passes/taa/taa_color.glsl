@@ -22,6 +22,14 @@ bool atTexelCentre(vec2 uv) {
     return all(lessThan(abs(pos - round(pos)), vec2(1.0 / 512.0)));
 }
 
+// The most of a history fetched at `uv` to keep (taa.h kTaaMotionCap): 1 at a texel centre, 1 − strength
+// halfway between texels. With strength 0 it is exactly 1, and min(feedback, 1) is the feedback.
+float motionFeedbackCap(vec2 uv, float strength) {
+    vec2 f = fract(uv * frame.screenSize - 0.5);
+    vec2 softening = 4.0 * f * (1.0 - f);
+    return 1.0 - strength * max(softening.x, softening.y);
+}
+
 // Moves `history` toward the box's centre until it lies inside the box (per-axis extents).
 vec3 clipToBox(vec3 history, vec3 center, vec3 extents) {
     vec3 offset = history - center;
@@ -45,13 +53,13 @@ struct HistoryBlend {
 // YCoCg): the history clipped to the neighbourhood's variance box (mean ± k·sigma), and its share. The
 // first kTaaHeldSamples frames of a history get equal shares; a still pixel (history at a texel centre,
 // inside a wider box) averages its last kTaaStillSamples frames, one whole jitter cycle, and then keeps
-// them until the box no longer holds them.
-HistoryBlend blendHistory(vec3 currentY, vec3 historyY, vec3 mean, vec3 sigma, vec2 historyUv, sampler2D samplesTex) {
+// them until the box no longer holds them. No share above `feedbackCap` (motionFeedbackCap, or 1).
+HistoryBlend blendHistory(vec3 currentY, vec3 historyY, vec3 mean, vec3 sigma, vec2 historyUv, sampler2D samplesTex, float feedbackCap) {
     bool still = atTexelCentre(historyUv);
     vec3 h = clipToBox(historyY, mean, (still ? kTaaStillClipSigma : kTaaClipSigma) * sigma + vec3(1e-4));
     bool stillRun = still && h == historyY;  // nothing clipped
     vec2 held = textureLod(samplesTex, historyUv, 0.0).xy;  // bilinear, as the history (a texel centre: that texel)
-    float feedback = min(historyFeedback(currentY.x, h.x), held.x / (held.x + 1.0));
+    float feedback = min(min(historyFeedback(currentY.x, h.x), held.x / (held.x + 1.0)), feedbackCap);
     if (stillRun) feedback = held.y >= kTaaStillSamples ? 1.0 : max(feedback, held.y / (held.y + 1.0));
     vec2 samples = vec2(min(held.x + 1.0, kTaaHeldSamples), stillRun ? min(held.y + 1.0, kTaaStillSamples) : 0.0);
     return HistoryBlend(h, feedback, samples);

@@ -58,6 +58,7 @@ graph::ImageHandle TaaPass::add(graph::RenderGraph& g, const FrameInputs& in, gr
     gpu::TaaPush push{};
     push.historyValid = h.previousValid && (!samples || samples->previousValid) ? 1u : 0u;
     push.reflectionMotion = inputs.reflectedPath ? 1u : 0u;
+    push.motionCap = inputs.motionCap ? gpu::kTaaMotionCap : 0.0f;
     const VkSampler nearest = in.samplers->nearestClamp;
     graph::ImageHandle out;
     const bool split = inputs.shownReflection.has_value();

@@ -32,6 +32,7 @@ struct TaaInputs {
     // still pixel off a reflector's rim this frame (the jitter's doing) its own reflection.
     std::optional<graph::ImageHandle> reflectionHistory;
     bool average = true;  // taa_average (taa.h kTaaStillSamples)
+    bool motionCap = true;  // taa_motion_cap (taa.h kTaaMotionCap)
 };
 
 struct TaaReflectionOutput {

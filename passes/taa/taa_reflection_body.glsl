@@ -145,7 +145,7 @@ void main() {
         bool disoccluded = expectedW > 0.0 && history.a > kKnownDepth && (history.a < nearest || history.a > farthest);
         if (hadReflection && !disoccluded) {
 #ifdef PPR_TAA_AVERAGE
-            HistoryBlend blend = blendHistory(currentY, toYCoCg(compress(history.rgb)), mean, sigma, historyUv, historySamples);
+            HistoryBlend blend = blendHistory(currentY, toYCoCg(compress(history.rgb)), mean, sigma, historyUv, historySamples, 1.0);
             vec3 h = blend.history;
             float feedback = blend.feedback;
             samples = blend.samples;
