@@ -208,9 +208,9 @@ const std::vector<SettingDecl>& settingDecls() {
                "keeps it until the box moves, so a still view stops flickering (0: the luma-driven feedback of 0.88-0.97 "
                "alone; switching it on restarts the histories)"),
         toggle("taa_motion_cap", "taa", [](FrameSettings& s) -> bool& { return s.taa.motionCap; }, true,
-               "taa=1, taa_average=1: the frame's history keeps at most 1 - 0.3 x 4f(1 - f) of itself, f being how far between texels "
-               "it was fetched, so a moving view does not soften a little more with every frame's Catmull-Rom fetch (a "
-               "still view is unchanged; 0: the feedback alone)"),
+               "taa=1, taa_average=1: the frame's history keeps at most 0.7 of itself wherever it was fetched between texels "
+               "(ramping back to 1 within a tenth of a texel of a centre), so a moving view does not soften a little more with "
+               "every frame's Catmull-Rom fetch (a still view is unchanged; 0: the feedback alone)"),
         number("exposure", "frame", [](FrameSettings& s) -> float& { return s.view.exposure; }, 1, 0.01, 100.0, "exposure multiplier before tonemapping"),
         integer("shadowres", "frame", [](FrameSettings& s) -> uint32_t& { return s.view.shadowRes; }, 2048, 256, 8192,
                 "shadow map resolution (texels per side)"),

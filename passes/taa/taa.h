@@ -15,10 +15,13 @@ PPR_CONST(float, kTaaFeedbackMax, 0.97f)
 // average until the box no longer holds it: a still view converges and stops flickering.
 PPR_CONST(float, kTaaHeldSamples, 32.0f)
 PPR_CONST(float, kTaaStillSamples, 16.0f)
-// taa_motion_cap=1 (with taa_average=1): the frame's history keeps at most 1 − this × 4f(1 − f) of itself, f being how far
-// between texels it was fetched (the larger axis). Each fetch between texels softens the history a
-// little (Catmull-Rom only partly restores its detail), and at a feedback near 0.97 the softening of
-// a dozen frames adds up; a still pixel (f = 0) and whole-pixel motion keep the feedback.
+// taa_motion_cap=1 (with taa_average=1): the frame's history keeps at most 1 − this of itself wherever it
+// was fetched between texels, ramping back to 1 within a tenth of a texel of a centre (f being the
+// fetch's offset on the larger axis: 1 − this × min(1, 3 × 4f(1 − f))). Each fetch between texels
+// softens the history a little (Catmull-Rom only partly restores its detail), and at a feedback near
+// 0.97 the softening of a dozen frames adds up, small offsets included; a still pixel (f = 0) and
+// whole-pixel motion keep the feedback. (The proportional cap, 1 − this × 4f(1 − f), scored the same
+// under a strafe and 0.2–0.4 dB lower under an orbit, docs/temporal.md.)
 PPR_CONST(float, kTaaMotionCap, 0.3f)
 // Variance clipping box: mean ± this many standard deviations of the 3×3 neighbourhood (YCoCg).
 PPR_CONST(float, kTaaClipSigma, 1.25f)

@@ -23,11 +23,11 @@ bool atTexelCentre(vec2 uv) {
 }
 
 // The most of a history fetched at `uv` to keep (taa.h kTaaMotionCap): 1 at a texel centre, 1 − strength
-// halfway between texels. With strength 0 it is exactly 1, and min(feedback, 1) is the feedback.
+// from about a tenth of a texel off it. With strength 0 it is exactly 1, and min(feedback, 1) is the feedback.
 float motionFeedbackCap(vec2 uv, float strength) {
     vec2 f = fract(uv * frame.screenSize - 0.5);
     vec2 softening = 4.0 * f * (1.0 - f);
-    return 1.0 - strength * max(softening.x, softening.y);
+    return 1.0 - strength * min(1.0, 3.0 * max(softening.x, softening.y));
 }
 
 // Moves `history` toward the box's centre until it lies inside the box (per-axis extents).
