@@ -21,6 +21,7 @@ passes::TaaReflectionInputs taaReflectionInputs(const graph::Blackboard& board, 
                   uint32_t(Reproject::Virtual) == gpu::kReprojectVirtual);
     r.mode = static_cast<uint32_t>(settings.taa.reproject);
     r.average = settings.taa.average;
+    r.stillSpread = settings.taa.stillSpread;
     return r;
 }
 
@@ -196,6 +197,7 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
         passes::TaaInputs t{hdr, gb.depth, gb.material, std::nullopt};
         t.average = settings.taa.average;
         t.motionCap = settings.taa.motionCap;
+        t.stillSpread = settings.taa.stillSpread;
         const ReflectionDistance* path = board.find<ReflectionDistance>();
         if (path && settings.taa.reproject == Reproject::Virtual) t.reflectedPath = path->image;
         const ShownReflection* shown = board.find<ShownReflection>();

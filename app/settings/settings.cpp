@@ -211,6 +211,10 @@ const std::vector<SettingDecl>& settingDecls() {
                "taa=1, taa_average=1: the frame's history keeps at most 0.7 of itself wherever it was fetched between texels "
                "(ramping back to 1 within a tenth of a texel of a centre), so a moving view does not soften a little more with "
                "every frame's Catmull-Rom fetch (a still view is unchanged; 0: the feedback alone)"),
+        toggle("taa_still_spread", "taa", [](FrameSettings& s) -> bool& { return s.taa.stillSpread; }, true,
+               "taa=1, taa_average=1: a still pixel whose run holds 4 frames or more keeps its history unclipped while the "
+               "frame's luma lies within 2.5 standard deviations of the luma its own run has shown, so an edge the jitter "
+               "cycle straddles stops restarting its average (0: the 3x3 neighbourhood's box alone decides)"),
         number("exposure", "frame", [](FrameSettings& s) -> float& { return s.view.exposure; }, 1, 0.01, 100.0, "exposure multiplier before tonemapping"),
         integer("shadowres", "frame", [](FrameSettings& s) -> uint32_t& { return s.view.shadowRes; }, 2048, 256, 8192,
                 "shadow map resolution (texels per side)"),

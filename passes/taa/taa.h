@@ -23,6 +23,14 @@ PPR_CONST(float, kTaaStillSamples, 16.0f)
 // whole-pixel motion keep the feedback. (The proportional cap, 1 − this × 4f(1 − f), scored the same
 // under a strafe and 0.2–0.4 dB lower under an orbit, docs/temporal.md.)
 PPR_CONST(float, kTaaMotionCap, 0.3f)
+// taa_still_spread=1 (with taa_average=1): a still pixel whose run holds at least kTaaSpreadSamples
+// frames keeps its history unclipped while the frame's luma lies within kTaaSpreadSigma standard
+// deviations (plus the floor, about one 8-bit level) of the run's own luma mean. One jittered frame's
+// 3×3 may lie wholly on one side of an edge that the jitter cycle straddles; the pixel's own frames
+// show how far it moves.
+PPR_CONST(float, kTaaSpreadSamples, 4.0f)
+PPR_CONST(float, kTaaSpreadSigma, 2.5f)
+PPR_CONST(float, kTaaSpreadFloor, 0.004f)
 // Variance clipping box: mean ± this many standard deviations of the 3×3 neighbourhood (YCoCg).
 PPR_CONST(float, kTaaClipSigma, 1.25f)
 // taa_average=1, a still pixel: its history averages the jitter cycle, which a single jittered frame's
@@ -45,7 +53,7 @@ struct TaaReflectionPush {
     uint historyValid;
     uint mode;         // kReproject*
     uint hasDistance;  // 0: the technique gave no path lengths; candidates and virtual use the surface's motion
-    uint pad0;
+    float stillSpread;  // taa_still_spread with taa_average: kTaaSpreadSigma, or 0 (off: the 3×3 box alone)
 };
 PPR_END
 PPR_SIZE_CHECK(TaaReflectionPush, 16);
@@ -60,8 +68,9 @@ struct TaaPush {
     // one its reflection history kept (a still rim pixel), before a neighbour's
     uint keptReflection;
     float motionCap;  // taa_motion_cap with taa_average: kTaaMotionCap, or 0 (off: the feedback alone)
+    float stillSpread;  // taa_still_spread with taa_average: kTaaSpreadSigma, or 0 (off: the 3×3 box alone)
 };
 PPR_END
-PPR_SIZE_CHECK(TaaPush, 16);
+PPR_SIZE_CHECK(TaaPush, 20);
 
 #endif

@@ -33,7 +33,7 @@ const int kSamplesBinding = 8;
 #endif
 #ifdef PPR_TAA_AVERAGE
 layout(set = 0, binding = kSamplesBinding) uniform sampler2D historySamples;  // what the history holds (taa_color.glsl), linear
-layout(set = 0, binding = kSamplesBinding + 1, rg16f) uniform writeonly image2D outSamples;
+layout(set = 0, binding = kSamplesBinding + 1, rgba16f) uniform writeonly image2D outSamples;
 #ifdef PPR_TAA_SPLIT
 layout(set = 0, binding = kSamplesBinding + 2) uniform sampler2D reflectionHistory;  // taa.reflection's new history (pc.keptReflection)
 #endif
@@ -137,7 +137,7 @@ void main() {
     if (currentWeight > 0.0) reflection = tileReflection[local.y * kTile + local.x];
 #endif
 #ifdef PPR_TAA_AVERAGE
-    vec2 samples = kFirstSamples;  // what the new history holds (taa_color.glsl)
+    vec4 samples = firstSamples(currentY);  // what the new history holds (taa_color.glsl)
 #endif
     if (pc.historyValid != 0u && onScreen) {
         vec3 historyRgb = sampleCatmullRom(historyColor, historyUv);
@@ -150,7 +150,8 @@ void main() {
 #endif
         vec3 history = toYCoCg(compress(historyRgb));
 #ifdef PPR_TAA_AVERAGE
-        HistoryBlend blend = blendHistory(currentY, history, mean, sigma, historyUv, historySamples, motionFeedbackCap(historyUv, pc.motionCap));
+        HistoryBlend blend = blendHistory(currentY, history, mean, sigma, historyUv, historySamples, motionFeedbackCap(historyUv, pc.motionCap),
+                                          pc.stillSpread);
         history = blend.history;
         float feedback = blend.feedback;
         samples = blend.samples;
@@ -172,7 +173,7 @@ void main() {
 #endif
     }
 #ifdef PPR_TAA_AVERAGE
-    imageStore(outSamples, pix, vec4(samples, 0.0, 0.0));
+    imageStore(outSamples, pix, samples);
 #endif
     vec3 outRgb = expand(fromYCoCg(resolved));
     // A non-finite history (never expected) must not live on in every later frame.

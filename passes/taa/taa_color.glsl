@@ -39,29 +39,47 @@ vec3 clipToBox(vec3 history, vec3 center, vec3 extents) {
 }
 
 // taa_average=1 (the *_average shader variants): the history's frames, counted beside it (its
-// "samples" image, x: frames held, y: consecutive still frames). A new history holds one frame, which
-// may start a still run.
-const vec2 kFirstSamples = vec2(1.0);
+// "samples" image, x: frames held, y: consecutive still frames, z and w: the mean and variance of the
+// current frames' luma over that still run). A new history holds one frame, which may start a still run.
+vec4 firstSamples(vec3 currentY) { return vec4(1.0, 1.0, currentY.x, 0.0); }
 
 struct HistoryBlend {
     vec3 history;    // clipped, compressed YCoCg: the new history is mix(current, history, feedback)
     float feedback;  // the history's share
-    vec2 samples;    // what the new history holds
+    vec4 samples;    // what the new history holds
 };
 
 // How to blend the current frame's YCoCg with the history fetched at `historyUv` (both compressed
 // YCoCg): the history clipped to the neighbourhood's variance box (mean ± k·sigma), and its share. The
 // first kTaaHeldSamples frames of a history get equal shares; a still pixel (history at a texel centre,
 // inside a wider box) averages its last kTaaStillSamples frames, one whole jitter cycle, and then keeps
-// them until the box no longer holds them. No share above `feedbackCap` (motionFeedbackCap, or 1).
-HistoryBlend blendHistory(vec3 currentY, vec3 historyY, vec3 mean, vec3 sigma, vec2 historyUv, sampler2D samplesTex, float feedbackCap) {
+// them until the box no longer holds them, or, with `spreadSigma` > 0 (taa.h kTaaSpreadSigma), until the
+// frame's luma leaves the spread the run has shown. No share above `feedbackCap` (motionFeedbackCap, or 1).
+HistoryBlend blendHistory(vec3 currentY, vec3 historyY, vec3 mean, vec3 sigma, vec2 historyUv, sampler2D samplesTex, float feedbackCap,
+                          float spreadSigma) {
     bool still = atTexelCentre(historyUv);
     vec3 h = clipToBox(historyY, mean, (still ? kTaaStillClipSigma : kTaaClipSigma) * sigma + vec3(1e-4));
+    vec4 held = textureLod(samplesTex, historyUv, 0.0);  // bilinear, as the history (a texel centre: that texel)
+    // A still pixel whose frame lies within the spread its own still run has shown keeps its history
+    // whole: one jittered frame's neighbourhood may sit on one side of an edge the cycle straddles.
+    if (spreadSigma > 0.0 && still && held.y >= kTaaSpreadSamples &&
+        abs(currentY.x - held.z) <= spreadSigma * sqrt(max(held.w, 0.0)) + kTaaSpreadFloor)
+        h = historyY;
     bool stillRun = still && h == historyY;  // nothing clipped
-    vec2 held = textureLod(samplesTex, historyUv, 0.0).xy;  // bilinear, as the history (a texel centre: that texel)
     float feedback = min(min(historyFeedback(currentY.x, h.x), held.x / (held.x + 1.0)), feedbackCap);
     if (stillRun) feedback = held.y >= kTaaStillSamples ? 1.0 : max(feedback, held.y / (held.y + 1.0));
-    vec2 samples = vec2(min(held.x + 1.0, kTaaHeldSamples), stillRun ? min(held.y + 1.0, kTaaStillSamples) : 0.0);
+    vec4 samples = firstSamples(currentY);
+    samples.x = min(held.x + 1.0, kTaaHeldSamples);
+    if (stillRun) {
+        // The run's luma moments, one frame more (Welford's update), until the run holds the whole
+        // jitter cycle: then they stay what the history, kept whole from then on, averaged.
+        samples.y = min(held.y + 1.0, kTaaStillSamples);
+        float runMean = held.z + (currentY.x - held.z) / samples.y;
+        samples.zw = held.y >= kTaaStillSamples ? held.zw
+                   : vec2(runMean, held.w + ((currentY.x - held.z) * (currentY.x - runMean) - held.w) / samples.y);
+    } else {
+        samples.y = 0.0;
+    }
     return HistoryBlend(h, feedback, samples);
 }
 

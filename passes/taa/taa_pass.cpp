@@ -34,6 +34,7 @@ TaaReflectionOutput TaaPass::addReflection(graph::RenderGraph& g, const FrameInp
     push.historyValid = h.previousValid && (!samples || samples->previousValid) ? 1u : 0u;
     push.mode = inputs.mode;
     push.hasDistance = inputs.distance ? 1u : 0u;
+    push.stillSpread = inputs.stillSpread ? gpu::kTaaSpreadSigma : 0.0f;
     const VkSampler nearest = in.samplers->nearestClamp;
     graph::ImageHandle shown, written;
     ComputePass pass(g, ctx_, "taa.reflection", reflectionPipelines_[inputs.average ? 1 : 0]);
@@ -59,6 +60,7 @@ graph::ImageHandle TaaPass::add(graph::RenderGraph& g, const FrameInputs& in, gr
     push.historyValid = h.previousValid && (!samples || samples->previousValid) ? 1u : 0u;
     push.reflectionMotion = inputs.reflectedPath ? 1u : 0u;
     push.motionCap = inputs.motionCap ? gpu::kTaaMotionCap : 0.0f;
+    push.stillSpread = inputs.stillSpread ? gpu::kTaaSpreadSigma : 0.0f;
     const VkSampler nearest = in.samplers->nearestClamp;
     graph::ImageHandle out;
     const bool split = inputs.shownReflection.has_value();

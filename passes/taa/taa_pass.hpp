@@ -17,6 +17,7 @@ struct TaaReflectionInputs {
     graph::ImageHandle depth, normal;            // G-buffer
     uint32_t mode = 0;                           // taa.h kReproject*
     bool average = true;                         // taa_average (taa.h kTaaStillSamples)
+    bool stillSpread = true;                     // taa_still_spread (taa.h kTaaSpreadSigma)
 };
 
 struct TaaInputs {
@@ -33,6 +34,7 @@ struct TaaInputs {
     std::optional<graph::ImageHandle> reflectionHistory;
     bool average = true;  // taa_average (taa.h kTaaStillSamples)
     bool motionCap = true;  // taa_motion_cap (taa.h kTaaMotionCap)
+    bool stillSpread = true;  // taa_still_spread (taa.h kTaaSpreadSigma)
 };
 
 struct TaaReflectionOutput {
@@ -49,7 +51,7 @@ public:
     static constexpr const char* kReflectionSamplesName = "taa.reflection.samples";
     static constexpr const char* kHistoryNames[] = {kHistoryName, kReflectionHistoryName, kSamplesName, kReflectionSamplesName};
     static constexpr VkFormat kHistoryFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
-    static constexpr VkFormat kSamplesFormat = VK_FORMAT_R16G16_SFLOAT;
+    static constexpr VkFormat kSamplesFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 
     explicit TaaPass(const vk::Context& ctx);
     // Returns the frame's anti-aliased HDR output (the new history itself, unless split).

@@ -25,7 +25,7 @@ layout(set = 0, binding = 7, rgba16f) uniform writeonly image2D outHistory;
 layout(set = 0, binding = 8, scalar) readonly buffer Motions { MotionData motions[]; };
 #ifdef PPR_TAA_AVERAGE
 layout(set = 0, binding = 9) uniform sampler2D historySamples;  // what the history holds (taa_color.glsl), linear
-layout(set = 0, binding = 10, rg16f) uniform writeonly image2D outSamples;
+layout(set = 0, binding = 10, rgba16f) uniform writeonly image2D outSamples;
 #endif
 #include "taa/reflection_motion.glsl"
 layout(push_constant, scalar) uniform Push { TaaReflectionPush pc; };
@@ -46,15 +46,15 @@ void main() {
         // The counts are read first, being half the history's size: a history that holds frames (x > 0)
         // holds a reflection.
         vec4 kept = vec4(0.0);
-        vec2 keptSamples = texelFetch(historySamples, pix, 0).xy;
+        vec4 keptSamples = texelFetch(historySamples, pix, 0);
         if (pc.historyValid != 0u && keptSamples.x > 0.0) {
             float prevW;
             vec2 historyUv = previousUv((vec2(pix) + 0.5) * frame.invScreenSize, texelFetch(depthTex, pix, 0).r, prevW);
             if (prevW > 0.0 && atTexelCentre(historyUv)) kept = texelFetch(historyTex, pix, 0);
         }
-        if (kept.a <= 0.0) keptSamples = vec2(0.0);
+        if (kept.a <= 0.0) keptSamples = vec4(0.0);
         imageStore(outHistory, pix, kept);
-        imageStore(outSamples, pix, vec4(keptSamples, 0.0, 0.0));
+        imageStore(outSamples, pix, keptSamples);
 #else
         imageStore(outHistory, pix, vec4(0.0));
 #endif
@@ -127,7 +127,7 @@ void main() {
 
     vec3 resolved = currentY;
 #ifdef PPR_TAA_AVERAGE
-    vec2 samples = kFirstSamples;  // what the new history holds (taa_color.glsl)
+    vec4 samples = firstSamples(currentY);  // what the new history holds (taa_color.glsl)
 #endif
     if (pc.historyValid != 0u && onScreen) {
         // Colour through the bicubic filter (a bilinear one blurs a little more every frame); the stored
@@ -145,7 +145,8 @@ void main() {
         bool disoccluded = expectedW > 0.0 && history.a > kKnownDepth && (history.a < nearest || history.a > farthest);
         if (hadReflection && !disoccluded) {
 #ifdef PPR_TAA_AVERAGE
-            HistoryBlend blend = blendHistory(currentY, toYCoCg(compress(history.rgb)), mean, sigma, historyUv, historySamples, 1.0);
+            HistoryBlend blend = blendHistory(currentY, toYCoCg(compress(history.rgb)), mean, sigma, historyUv, historySamples, 1.0,
+                                              pc.stillSpread);
             vec3 h = blend.history;
             float feedback = blend.feedback;
             samples = blend.samples;
@@ -159,7 +160,7 @@ void main() {
     vec3 rgb = expand(fromYCoCg(resolved));
     if (any(isnan(rgb)) || any(isinf(rgb))) rgb = current.rgb;
 #ifdef PPR_TAA_AVERAGE
-    imageStore(outSamples, pix, vec4(samples, 0.0, 0.0));
+    imageStore(outSamples, pix, samples);
 #endif
     imageStore(outShown, pix, vec4(rgb, current.a));  // the class code stays the technique's
     float currentW = (frame.viewProj * virtualPoint).w;
