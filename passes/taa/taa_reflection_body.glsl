@@ -94,6 +94,9 @@ void main() {
     float depth = texelFetch(depthTex, pix, 0).r;
     float prevW;
     vec2 historyUv = previousUv(uv, depth, prevW);
+    // The still spread only where the surface is still too: `candidates` fetches a far reflection at a
+    // texel centre (its parallax-scaled vector is zero) while the camera moves and the reflection with it.
+    float stillSpread = atTexelCentre(historyUv) ? pc.stillSpread : 0.0;
     vec2 path = pc.hasDistance != 0u ? texelFetch(distanceTex, pix, 0).xy : vec2(0.0);
     float dist = path.x;
     uint slot = pathMotionSlot(path.y);
@@ -146,7 +149,7 @@ void main() {
         if (hadReflection && !disoccluded) {
 #ifdef PPR_TAA_AVERAGE
             HistoryBlend blend = blendHistory(currentY, toYCoCg(compress(history.rgb)), mean, sigma, historyUv, historySamples, 1.0,
-                                              pc.stillSpread);
+                                              stillSpread);
             vec3 h = blend.history;
             float feedback = blend.feedback;
             samples = blend.samples;
