@@ -67,10 +67,10 @@ TEST(CameraPathRun, CompareScoresEveryFrameOfAStrafe) {
 // supersampled reference under a strafe than fetched by the surface's motion or the seed note's
 // candidates. Every row is one shot from the same jitter sample, so frame 0 is the same picture.
 // Measured on lavapipe at this size (16 frames, taa_average=1, taa_motion_cap=1, taa_still_spread=1):
-// surface 32.58, candidates 32.08, virtual 32.83 dB (no AA 30.7). The whole-colour frame TAA (taa_split=0) is not
-// ranked here: without the motion cap the split led it by 0.46 dB (32.85 against 32.39), with the cap
-// it scores 32.87 (docs/temporal.md, Measured). At 160x90 the order of candidates and virtual flips:
-// too few pixels per ripple.
+// surface 32.58, candidates 32.08, virtual 32.83 dB (no AA 30.7). The whole-colour frame TAA
+// (taa_split=0) is not ranked here: without the motion cap the split led it by 0.46 dB (32.85 against
+// 32.39), with the cap it scores 32.87 (docs/temporal.md, Measured). At 160x90 the order of candidates
+// and virtual flips: too few pixels per ripple.
 TEST(CameraPathRun, VirtualReprojectionBeatsSurfaceAndCandidatesOnReflectorsUnderStrafe) {
     auto dir = tempDir("path-reproject");
     const nlohmann::json m = validatedCompare(dir, "--path strafe --frames 16 --camera puddles --size 320x180 --technique planar@taa=1,reproject=surface "
