@@ -56,26 +56,37 @@ StillShot stillShot(GpuFixture& f, const scene::CameraPose& cam, const util::Rgb
     return shot;
 }
 
+// A still planar view with TAA, then again with one setting switched off: each shot's flicker from frame
+// kJitterLength + 1 on, and its last frame against the supersampled reference. Prints both.
+struct StillShots {
+    StillShot on, off;
+};
+StillShots stillShotsWithAndWithout(const char* camera, const char* setting, uint32_t frames) {
+    GpuFixture f;
+    f.headless->setTechnique("planar");
+    const scene::CameraPose cam = f.camera(camera);
+    const util::Rgba8Image reference = f.headless->captureSupersampled(cam, kSize, scene::kJitterLength);
+    f.headless->settings().set("taa", "1");
+    constexpr uint32_t kFrom = scene::kJitterLength;
+    StillShots shots;
+    shots.on = stillShot(f, cam, reference, frames, kFrom);
+    f.headless->settings().set(setting, "0");
+    shots.off = stillShot(f, cam, reference, frames, kFrom);
+    std::printf("still %s, frames %u-%u: change %.4f levels (%s=0 %.4f), last frame %.2f dB (%.2f)\n", camera, kFrom + 1, frames - 1,
+                shots.on.flicker, setting, shots.off.flicker, shots.on.lastDb, shots.off.lastDb);
+    EXPECT_EQ(f.ctx->validationErrors(), 0u);
+    return shots;
+}
+
 // taa_average=1 gives each of a still pixel's frames an equal share and, once it holds the whole jitter
 // cycle, keeps that average: the picture stops changing where the feedback of taa_average=0 kept
 // 3-12 % of every new jittered frame. Measured on lavapipe (planar, puddles, 320x180, frames 17-23):
 // change 0.041 against 0.350 levels, last frame 40.86 against 37.44 dB (0.061 and 40.53 before
 // taa_still_spread).
 TEST(Taa, AveragingTheJitterCycleStopsAStillViewFlickering) {
-    GpuFixture f;
-    f.headless->setTechnique("planar");
-    const scene::CameraPose cam = f.camera("puddles");
-    const util::Rgba8Image reference = f.headless->captureSupersampled(cam, kSize, scene::kJitterLength);
-    f.headless->settings().set("taa", "1");
-    constexpr uint32_t kFrames = scene::kJitterLength + 8, kFrom = scene::kJitterLength;
-    const StillShot averaged = stillShot(f, cam, reference, kFrames, kFrom);
-    f.headless->settings().set("taa_average", "0");
-    const StillShot feedback = stillShot(f, cam, reference, kFrames, kFrom);
-    std::printf("still puddles, frames %u-%u: change %.3f levels (taa_average=0 %.3f), last frame %.2f dB (%.2f)\n", kFrom + 1, kFrames - 1,
-                averaged.flicker, feedback.flicker, averaged.lastDb, feedback.lastDb);
-    EXPECT_LT(averaged.flicker, 0.5 * feedback.flicker);
-    EXPECT_GT(averaged.lastDb, feedback.lastDb + 1.0);
-    EXPECT_EQ(f.ctx->validationErrors(), 0u);
+    const StillShots shots = stillShotsWithAndWithout("puddles", "taa_average", scene::kJitterLength + 8);
+    EXPECT_LT(shots.on.flicker, 0.5 * shots.off.flicker);
+    EXPECT_GT(shots.on.lastDb, shots.off.lastDb + 1.0);
 }
 
 // taa_still_spread=1: a still pixel whose frame stays within the spread of its own still run keeps its
@@ -83,20 +94,9 @@ TEST(Taa, AveragingTheJitterCycleStopsAStillViewFlickering) {
 // would clip it and restart the run. Measured on lavapipe (planar, overview, 320x180, frames 17-31):
 // change 0.0069 levels against 0.0171, last frame 42.76 against 42.43 dB.
 TEST(Taa, StillSpreadKeepsEdgesTheJitterStraddlesStill) {
-    GpuFixture f;
-    f.headless->setTechnique("planar");
-    const scene::CameraPose cam = f.camera("overview");
-    const util::Rgba8Image reference = f.headless->captureSupersampled(cam, kSize, scene::kJitterLength);
-    f.headless->settings().set("taa", "1");
-    constexpr uint32_t kFrames = 2 * scene::kJitterLength, kFrom = scene::kJitterLength;
-    const StillShot spread = stillShot(f, cam, reference, kFrames, kFrom);
-    f.headless->settings().set("taa_still_spread", "0");
-    const StillShot box = stillShot(f, cam, reference, kFrames, kFrom);
-    std::printf("still overview, frames %u-%u: change %.4f levels (taa_still_spread=0 %.4f), last frame %.2f dB (%.2f)\n", kFrom + 1,
-                kFrames - 1, spread.flicker, box.flicker, spread.lastDb, box.lastDb);
-    EXPECT_LT(spread.flicker, 0.75 * box.flicker);
-    EXPECT_GT(spread.lastDb, box.lastDb);
-    EXPECT_EQ(f.ctx->validationErrors(), 0u);
+    const StillShots shots = stillShotsWithAndWithout("overview", "taa_still_spread", 2 * scene::kJitterLength);
+    EXPECT_LT(shots.on.flicker, 0.75 * shots.off.flicker);
+    EXPECT_GT(shots.on.lastDb, shots.off.lastDb);
 }
 
 TEST(Taa, OffLeavesNoTraceInLaterFrames) {
