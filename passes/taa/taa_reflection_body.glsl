@@ -43,8 +43,8 @@ void main() {
 #ifdef PPR_TAA_AVERAGE
         // A still pixel that the jitter takes off a reflector's rim keeps its reflection's history (and
         // its still run) for the frames that bring the reflection back.
-        // The counts are read first, being half the history's size: a history that holds frames (x > 0)
-        // holds a reflection.
+        // The counts are read first: a history that holds frames (x > 0) holds a reflection (with
+        // taa_still_spread the counts carry the run's luma moments too, kept with it).
         vec4 kept = vec4(0.0);
         vec4 keptSamples = texelFetch(historySamples, pix, 0);
         if (pc.historyValid != 0u && keptSamples.x > 0.0) {
