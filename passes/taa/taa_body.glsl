@@ -33,10 +33,15 @@ const int kSamplesBinding = 8;
 #endif
 #ifdef PPR_TAA_AVERAGE
 layout(set = 0, binding = kSamplesBinding) uniform sampler2D historySamples;  // what the history holds (taa_color.glsl), linear
-layout(set = 0, binding = kSamplesBinding + 1, rgba16f) uniform writeonly image2D outSamples;
+layout(set = 0, binding = kSamplesBinding + 1, rg16f) uniform writeonly image2D outSamples;
 #ifdef PPR_TAA_SPLIT
 layout(set = 0, binding = kSamplesBinding + 2) uniform sampler2D reflectionHistory;  // taa.reflection's new history (pc.keptReflection)
+const int kSpreadBinding = kSamplesBinding + 3;
+#else
+const int kSpreadBinding = kSamplesBinding + 2;
 #endif
+layout(set = 0, binding = kSpreadBinding) uniform sampler2D historySpread;  // a still run's luma moments (taa_color.glsl), nearest
+layout(set = 0, binding = kSpreadBinding + 1, rg16f) uniform writeonly image2D outSpread;
 #endif
 #include "taa/taa_motion.glsl"
 #include "taa/object_motion.glsl"
@@ -137,7 +142,8 @@ void main() {
     if (currentWeight > 0.0) reflection = tileReflection[local.y * kTile + local.x];
 #endif
 #ifdef PPR_TAA_AVERAGE
-    vec4 samples = firstSamples(currentY);  // what the new history holds (taa_color.glsl)
+    vec2 samples = kFirstSamples;  // what the new history holds (taa_color.glsl)
+    vec2 spread = firstSpread(currentY);
 #endif
     if (pc.historyValid != 0u && onScreen) {
         vec3 historyRgb = sampleCatmullRom(historyColor, historyUv);
@@ -150,11 +156,12 @@ void main() {
 #endif
         vec3 history = toYCoCg(compress(historyRgb));
 #ifdef PPR_TAA_AVERAGE
-        HistoryBlend blend = blendHistory(currentY, history, mean, sigma, historyUv, historySamples, motionFeedbackCap(historyUv, pc.motionCap),
-                                          pc.stillSpread);
+        HistoryBlend blend = blendHistory(currentY, history, mean, sigma, historyUv, historySamples, historySpread,
+                                          motionFeedbackCap(historyUv, pc.motionCap), pc.stillSpread);
         history = blend.history;
         float feedback = blend.feedback;
         samples = blend.samples;
+        spread = blend.spread;
 #else
         history = clipToBox(history, mean, kTaaClipSigma * sigma + vec3(1e-4));
         float feedback = historyFeedback(currentY.x, history.x);
@@ -173,7 +180,8 @@ void main() {
 #endif
     }
 #ifdef PPR_TAA_AVERAGE
-    imageStore(outSamples, pix, samples);
+    imageStore(outSamples, pix, vec4(samples, 0.0, 0.0));
+    imageStore(outSpread, pix, vec4(spread, 0.0, 0.0));
 #endif
     vec3 outRgb = expand(fromYCoCg(resolved));
     // A non-finite history (never expected) must not live on in every later frame.

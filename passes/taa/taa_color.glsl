@@ -39,14 +39,17 @@ vec3 clipToBox(vec3 history, vec3 center, vec3 extents) {
 }
 
 // taa_average=1 (the *_average shader variants): the history's frames, counted beside it (its
-// "samples" image, x: frames held, y: consecutive still frames, z and w: the mean and variance of the
-// current frames' luma over that still run). A new history holds one frame, which may start a still run.
-vec4 firstSamples(vec3 currentY) { return vec4(1.0, 1.0, currentY.x, 0.0); }
+// "samples" image, x: frames held, y: consecutive still frames), and its "spread" image: the mean and
+// variance of the current frames' luma over that still run. A new history holds one frame, which may
+// start a still run.
+const vec2 kFirstSamples = vec2(1.0);
+vec2 firstSpread(vec3 currentY) { return vec2(currentY.x, 0.0); }
 
 struct HistoryBlend {
     vec3 history;    // clipped, compressed YCoCg: the new history is mix(current, history, feedback)
     float feedback;  // the history's share
-    vec4 samples;    // what the new history holds
+    vec2 samples;    // what the new history holds
+    vec2 spread;     // its still run's luma mean and variance
 };
 
 // How to blend the current frame's YCoCg with the history fetched at `historyUv` (both compressed
@@ -55,32 +58,30 @@ struct HistoryBlend {
 // inside a wider box) averages its last kTaaStillSamples frames, one whole jitter cycle, and then keeps
 // them until the box no longer holds them, or, with `spreadSigma` > 0 (taa.h kTaaSpreadSigma), until the
 // frame's luma leaves the spread the run has shown. No share above `feedbackCap` (motionFeedbackCap, or 1).
-HistoryBlend blendHistory(vec3 currentY, vec3 historyY, vec3 mean, vec3 sigma, vec2 historyUv, sampler2D samplesTex, float feedbackCap,
-                          float spreadSigma) {
+HistoryBlend blendHistory(vec3 currentY, vec3 historyY, vec3 mean, vec3 sigma, vec2 historyUv, sampler2D samplesTex, sampler2D spreadTex,
+                          float feedbackCap, float spreadSigma) {
     bool still = atTexelCentre(historyUv);
     vec3 h = clipToBox(historyY, mean, (still ? kTaaStillClipSigma : kTaaClipSigma) * sigma + vec3(1e-4));
-    vec4 held = textureLod(samplesTex, historyUv, 0.0);  // bilinear, as the history (a texel centre: that texel)
+    vec2 held = textureLod(samplesTex, historyUv, 0.0).xy;  // bilinear, as the history (a texel centre: that texel)
+    // Only a still pixel's run has moments, read at its texel (the history's, to 1/512 pixel).
+    vec2 run = still ? texelFetch(spreadTex, ivec2(round(historyUv * frame.screenSize - 0.5)), 0).xy : vec2(0.0);
     // A still pixel whose frame lies within the spread its own still run has shown keeps its history
     // whole: one jittered frame's neighbourhood may sit on one side of an edge the cycle straddles.
     if (spreadSigma > 0.0 && still && held.y >= kTaaSpreadSamples &&
-        abs(currentY.x - held.z) <= spreadSigma * sqrt(max(held.w, 0.0)) + kTaaSpreadFloor)
+        abs(currentY.x - run.x) <= spreadSigma * sqrt(max(run.y, 0.0)) + kTaaSpreadFloor)
         h = historyY;
     bool stillRun = still && h == historyY;  // nothing clipped
     float feedback = min(min(historyFeedback(currentY.x, h.x), held.x / (held.x + 1.0)), feedbackCap);
     if (stillRun) feedback = held.y >= kTaaStillSamples ? 1.0 : max(feedback, held.y / (held.y + 1.0));
-    vec4 samples = firstSamples(currentY);
-    samples.x = min(held.x + 1.0, kTaaHeldSamples);
+    vec2 samples = vec2(min(held.x + 1.0, kTaaHeldSamples), stillRun ? min(held.y + 1.0, kTaaStillSamples) : 0.0);
+    vec2 spread = firstSpread(currentY);
     if (stillRun) {
         // The run's luma moments, one frame more (Welford's update), until the run holds the whole
         // jitter cycle: then they stay what the history, kept whole from then on, averaged.
-        samples.y = min(held.y + 1.0, kTaaStillSamples);
-        float runMean = held.z + (currentY.x - held.z) / samples.y;
-        samples.zw = held.y >= kTaaStillSamples ? held.zw
-                   : vec2(runMean, held.w + ((currentY.x - held.z) * (currentY.x - runMean) - held.w) / samples.y);
-    } else {
-        samples.y = 0.0;
+        float runMean = run.x + (currentY.x - run.x) / samples.y;
+        spread = held.y >= kTaaStillSamples ? run : vec2(runMean, run.y + ((currentY.x - run.x) * (currentY.x - runMean) - run.y) / samples.y);
     }
-    return HistoryBlend(h, feedback, samples);
+    return HistoryBlend(h, feedback, samples, spread);
 }
 
 // Catmull-Rom history sample. Per axis the two middle weights share one bilinear tap placed between

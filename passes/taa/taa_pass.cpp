@@ -29,9 +29,13 @@ TaaReflectionOutput TaaPass::addReflection(graph::RenderGraph& g, const FrameInp
                                           const TaaReflectionInputs& inputs) const {
     const graph::HistoryImage h = g.history(history, kReflectionHistoryName, {in.extent.width, in.extent.height, kHistoryFormat, 1});
     std::optional<graph::HistoryImage> samples;
-    if (inputs.average) samples = g.history(history, kReflectionSamplesName, {in.extent.width, in.extent.height, kSamplesFormat, 1});
+    std::optional<graph::HistoryImage> spread;
+    if (inputs.average) {
+        samples = g.history(history, kReflectionSamplesName, {in.extent.width, in.extent.height, kSamplesFormat, 1});
+        spread = g.history(history, kReflectionSpreadName, {in.extent.width, in.extent.height, kSamplesFormat, 1});
+    }
     gpu::TaaReflectionPush push{};
-    push.historyValid = h.previousValid && (!samples || samples->previousValid) ? 1u : 0u;
+    push.historyValid = h.previousValid && (!samples || (samples->previousValid && spread->previousValid)) ? 1u : 0u;
     push.mode = inputs.mode;
     push.hasDistance = inputs.distance ? 1u : 0u;
     push.stillSpread = inputs.stillSpread ? gpu::kTaaSpreadSigma : 0.0f;
@@ -47,7 +51,10 @@ TaaReflectionOutput TaaPass::addReflection(graph::RenderGraph& g, const FrameInp
         .storageWrite(g.createImage("taa.reflection.shown", {in.extent.width, in.extent.height, kHistoryFormat, 1}), &shown)
         .storageWrite(h.current, &written)
         .hostStorage(in.motion);  // a moving reflected point's motion slot (the path image's tag)
-    if (samples) pass.sampled(samples->previous, in.samplers->linearClamp).storageWrite(samples->current, nullptr);
+    if (samples) {
+        pass.sampled(samples->previous, in.samplers->linearClamp).storageWrite(samples->current, nullptr);
+        pass.sampled(spread->previous, nearest).storageWrite(spread->current, nullptr);
+    }
     pass.push(push).dispatch(in.extent, gpu::kTaaGroupSize);
     return {shown, written};
 }
@@ -55,9 +62,13 @@ TaaReflectionOutput TaaPass::addReflection(graph::RenderGraph& g, const FrameInp
 graph::ImageHandle TaaPass::add(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history, const TaaInputs& inputs) const {
     const graph::HistoryImage h = g.history(history, kHistoryName, {in.extent.width, in.extent.height, kHistoryFormat, 1});
     std::optional<graph::HistoryImage> samples;
-    if (inputs.average) samples = g.history(history, kSamplesName, {in.extent.width, in.extent.height, kSamplesFormat, 1});
+    std::optional<graph::HistoryImage> spread;
+    if (inputs.average) {
+        samples = g.history(history, kSamplesName, {in.extent.width, in.extent.height, kSamplesFormat, 1});
+        spread = g.history(history, kSpreadName, {in.extent.width, in.extent.height, kSamplesFormat, 1});
+    }
     gpu::TaaPush push{};
-    push.historyValid = h.previousValid && (!samples || samples->previousValid) ? 1u : 0u;
+    push.historyValid = h.previousValid && (!samples || (samples->previousValid && spread->previousValid)) ? 1u : 0u;
     push.reflectionMotion = inputs.reflectedPath ? 1u : 0u;
     push.motionCap = inputs.motionCap ? gpu::kTaaMotionCap : 0.0f;
     push.stillSpread = inputs.stillSpread ? gpu::kTaaSpreadSigma : 0.0f;
@@ -79,6 +90,7 @@ graph::ImageHandle TaaPass::add(graph::RenderGraph& g, const FrameInputs& in, gr
     if (samples) {
         pass.sampled(samples->previous, in.samplers->linearClamp).storageWrite(samples->current, nullptr);
         if (split) pass.sampled(inputs.reflectionHistory.value_or(inputs.depth), nearest);  // unread without one (pc.keptReflection 0)
+        pass.sampled(spread->previous, nearest).storageWrite(spread->current, nullptr);
     }
     push.keptReflection = split && samples && inputs.reflectionHistory ? 1u : 0u;
     pass.push(push).dispatch(in.extent, gpu::kTaaGroupSize);

@@ -49,9 +49,13 @@ public:
     // How many frames each history pixel holds, beside each history (taa_average).
     static constexpr const char* kSamplesName = "taa.color.samples";
     static constexpr const char* kReflectionSamplesName = "taa.reflection.samples";
-    static constexpr const char* kHistoryNames[] = {kHistoryName, kReflectionHistoryName, kSamplesName, kReflectionSamplesName};
+    // A still run's luma moments, beside each (taa_average; read with taa_still_spread).
+    static constexpr const char* kSpreadName = "taa.color.spread";
+    static constexpr const char* kReflectionSpreadName = "taa.reflection.spread";
+    static constexpr const char* kHistoryNames[] = {kHistoryName,         kReflectionHistoryName, kSamplesName,
+                                                    kReflectionSamplesName, kSpreadName,            kReflectionSpreadName};
     static constexpr VkFormat kHistoryFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
-    static constexpr VkFormat kSamplesFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+    static constexpr VkFormat kSamplesFormat = VK_FORMAT_R16G16_SFLOAT;
 
     explicit TaaPass(const vk::Context& ctx);
     // Returns the frame's anti-aliased HDR output (the new history itself, unless split).

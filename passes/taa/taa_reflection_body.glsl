@@ -25,7 +25,9 @@ layout(set = 0, binding = 7, rgba16f) uniform writeonly image2D outHistory;
 layout(set = 0, binding = 8, scalar) readonly buffer Motions { MotionData motions[]; };
 #ifdef PPR_TAA_AVERAGE
 layout(set = 0, binding = 9) uniform sampler2D historySamples;  // what the history holds (taa_color.glsl), linear
-layout(set = 0, binding = 10, rgba16f) uniform writeonly image2D outSamples;
+layout(set = 0, binding = 10, rg16f) uniform writeonly image2D outSamples;
+layout(set = 0, binding = 11) uniform sampler2D historySpread;  // a still run's luma moments (taa_color.glsl), nearest
+layout(set = 0, binding = 12, rg16f) uniform writeonly image2D outSpread;
 #endif
 #include "taa/reflection_motion.glsl"
 layout(push_constant, scalar) uniform Push { TaaReflectionPush pc; };
@@ -43,18 +45,19 @@ void main() {
 #ifdef PPR_TAA_AVERAGE
         // A still pixel that the jitter takes off a reflector's rim keeps its reflection's history (and
         // its still run) for the frames that bring the reflection back.
-        // The counts are read first: a history that holds frames (x > 0) holds a reflection (with
-        // taa_still_spread the counts carry the run's luma moments too, kept with it).
+        // The counts are read first, being half the history's size: a history that holds frames (x > 0)
+        // holds a reflection. Its still run's moments are kept with it.
         vec4 kept = vec4(0.0);
-        vec4 keptSamples = texelFetch(historySamples, pix, 0);
+        vec2 keptSamples = texelFetch(historySamples, pix, 0).xy;
         if (pc.historyValid != 0u && keptSamples.x > 0.0) {
             float prevW;
             vec2 historyUv = previousUv((vec2(pix) + 0.5) * frame.invScreenSize, texelFetch(depthTex, pix, 0).r, prevW);
             if (prevW > 0.0 && atTexelCentre(historyUv)) kept = texelFetch(historyTex, pix, 0);
         }
-        if (kept.a <= 0.0) keptSamples = vec4(0.0);
+        if (kept.a <= 0.0) keptSamples = vec2(0.0);
         imageStore(outHistory, pix, kept);
-        imageStore(outSamples, pix, keptSamples);
+        imageStore(outSamples, pix, vec4(keptSamples, 0.0, 0.0));
+        imageStore(outSpread, pix, keptSamples.x > 0.0 ? texelFetch(historySpread, pix, 0) : vec4(0.0));
 #else
         imageStore(outHistory, pix, vec4(0.0));
 #endif
@@ -130,7 +133,8 @@ void main() {
 
     vec3 resolved = currentY;
 #ifdef PPR_TAA_AVERAGE
-    vec4 samples = firstSamples(currentY);  // what the new history holds (taa_color.glsl)
+    vec2 samples = kFirstSamples;  // what the new history holds (taa_color.glsl)
+    vec2 spread = firstSpread(currentY);
 #endif
     if (pc.historyValid != 0u && onScreen) {
         // Colour through the bicubic filter (a bilinear one blurs a little more every frame); the stored
@@ -148,11 +152,12 @@ void main() {
         bool disoccluded = expectedW > 0.0 && history.a > kKnownDepth && (history.a < nearest || history.a > farthest);
         if (hadReflection && !disoccluded) {
 #ifdef PPR_TAA_AVERAGE
-            HistoryBlend blend = blendHistory(currentY, toYCoCg(compress(history.rgb)), mean, sigma, historyUv, historySamples, 1.0,
-                                              stillSpread);
+            HistoryBlend blend = blendHistory(currentY, toYCoCg(compress(history.rgb)), mean, sigma, historyUv, historySamples, historySpread,
+                                              1.0, stillSpread);
             vec3 h = blend.history;
             float feedback = blend.feedback;
             samples = blend.samples;
+            spread = blend.spread;
 #else
             vec3 h = clipToBox(toYCoCg(compress(history.rgb)), mean, kTaaClipSigma * sigma + vec3(1e-4));
             float feedback = historyFeedback(currentY.x, h.x);
@@ -163,7 +168,8 @@ void main() {
     vec3 rgb = expand(fromYCoCg(resolved));
     if (any(isnan(rgb)) || any(isinf(rgb))) rgb = current.rgb;
 #ifdef PPR_TAA_AVERAGE
-    imageStore(outSamples, pix, samples);
+    imageStore(outSamples, pix, vec4(samples, 0.0, 0.0));
+    imageStore(outSpread, pix, vec4(spread, 0.0, 0.0));
 #endif
     imageStore(outShown, pix, vec4(rgb, current.a));  // the class code stays the technique's
     float currentW = (frame.viewProj * virtualPoint).w;
