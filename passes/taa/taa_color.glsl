@@ -22,6 +22,9 @@ bool atTexelCentre(vec2 uv) {
     return all(lessThan(abs(pos - round(pos)), vec2(1.0 / 512.0)));
 }
 
+// The texel nearest to `uv`, on the screen: where a fetch at a texel centre reads.
+ivec2 nearestTexel(vec2 uv) { return clamp(ivec2(round(uv * frame.screenSize - 0.5)), ivec2(0), ivec2(frame.screenSize) - 1); }
+
 // The most of a history fetched at `uv` to keep (taa.h kTaaMotionCap): 1 at a texel centre, 1 − strength
 // from about a tenth of a texel off it. With strength 0 it is exactly 1, and min(feedback, 1) is the feedback.
 float motionFeedbackCap(vec2 uv, float strength) {
@@ -64,7 +67,7 @@ HistoryBlend blendHistory(vec3 currentY, vec3 historyY, vec3 mean, vec3 sigma, v
     vec3 h = clipToBox(historyY, mean, (still ? kTaaStillClipSigma : kTaaClipSigma) * sigma + vec3(1e-4));
     vec2 held = textureLod(samplesTex, historyUv, 0.0).xy;  // bilinear, as the history (a texel centre: that texel)
     // Only a still pixel's run has moments, read at its texel (the history's, to 1/512 pixel).
-    vec2 run = still ? texelFetch(spreadTex, ivec2(round(historyUv * frame.screenSize - 0.5)), 0).xy : vec2(0.0);
+    vec2 run = still ? texelFetch(spreadTex, nearestTexel(historyUv), 0).xy : vec2(0.0);
     // A still pixel whose frame lies within the spread its own still run has shown keeps its history
     // whole: one jittered frame's neighbourhood may sit on one side of an edge the cycle straddles.
     if (spreadSigma > 0.0 && still && held.y >= kTaaSpreadSamples &&
@@ -91,7 +94,7 @@ HistoryBlend blendHistory(vec3 currentY, vec3 historyY, vec3 mean, vec3 sigma, v
 vec3 sampleCatmullRom(sampler2D history, vec2 uv) {
     vec2 size = frame.screenSize;
     vec2 pos = uv * size - 0.5;
-    if (atTexelCentre(uv)) return texelFetch(history, clamp(ivec2(round(pos)), ivec2(0), ivec2(size) - 1), 0).rgb;
+    if (atTexelCentre(uv)) return texelFetch(history, nearestTexel(uv), 0).rgb;
     vec2 base = floor(pos);
     vec2 f = pos - base;
     vec2 w0 = f * (-0.5 + f * (1.0 - 0.5 * f));
