@@ -22,6 +22,7 @@ passes::TaaReflectionInputs taaReflectionInputs(const graph::Blackboard& board, 
     r.mode = static_cast<uint32_t>(settings.taa.reproject);
     r.average = settings.taa.average;
     r.stillSpread = settings.taa.stillSpread;
+    r.threads = settings.taa.threads;
     return r;
 }
 
@@ -198,6 +199,7 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
         t.average = settings.taa.average;
         t.motionCap = settings.taa.motionCap;
         t.stillSpread = settings.taa.stillSpread;
+        t.threads = settings.taa.threads;
         const ReflectionDistance* path = board.find<ReflectionDistance>();
         if (path && settings.taa.reproject == Reproject::Virtual) t.reflectedPath = path->image;
         const ShownReflection* shown = board.find<ShownReflection>();

@@ -3,6 +3,7 @@
 #include "common/frame.h"
 #include "ppr_project/project_threads.hpp"
 #include "ppr_reach/reach_threads.hpp"
+#include "taa/taa_threads.hpp"
 #include "tile_classify/classify_threads.hpp"
 #include "settings/debug_views.hpp"
 
@@ -215,6 +216,9 @@ const std::vector<SettingDecl>& settingDecls() {
                "taa=1, taa_average=1: a still pixel whose run holds 4 frames or more keeps its history unclipped while the "
                "frame's luma lies within 2.5 standard deviations of the luma its own run has shown, so an edge the jitter "
                "cycle straddles stops restarting its average (0: the 3x3 neighbourhood's box alone decides)"),
+        widthSetting("taa_threads", "taa", [](FrameSettings& s) -> uint32_t& { return s.taa.threads; }, passes::kTaaThreadChoices,
+                     "taa=1: invocations per 16x16 tile in both resolves, each a column of 256/threads pixels (auto: 16 on a CPU "
+                     "device, where a workgroup costs per invocation; 256 on a GPU); the same images with any"),
         number("exposure", "frame", [](FrameSettings& s) -> float& { return s.view.exposure; }, 1, 0.01, 100.0, "exposure multiplier before tonemapping"),
         integer("shadowres", "frame", [](FrameSettings& s) -> uint32_t& { return s.view.shadowRes; }, 2048, 256, 8192,
                 "shadow map resolution (texels per side)"),

@@ -3,7 +3,15 @@
 #define PPR_TAA_H
 #include "shader/shared.h"
 
-PPR_CONST(uint, kTaaGroupSize, 16u)
+// Both resolves work in 16×16-pixel tiles, one workgroup each (taa_body.glsl loads a tile and its border
+// into shared memory). An invocation resolves a column of 256 / threads pixels, one above the other:
+// --set taa_threads (specialization constant 0). On a CPU device 16 (a whole column each), because
+// lavapipe runs a workgroup's invocations as 8-wide SIMD batches and switches between all of them at a
+// barrier, and even without one pays per batch: 16 invocations made `taa` 30 % and `taa.reflection`
+// 25 % cheaper than 256 at 1280x720 (docs/temporal.md, Cost); on a GPU 256, one pixel each.
+PPR_CONST(uint, kTaaTileSize, 16u)
+PPR_CONST(uint, kTaaThreads, 16u)
+PPR_CONST(uint, kTaaThreadsGpu, 256u)
 // Weight of the history: between these, by how much the current and the clipped history's luma agree
 // (a large difference is a change the history has not seen yet, so it keeps less of it).
 PPR_CONST(float, kTaaFeedbackMin, 0.88f)

@@ -16,7 +16,8 @@
 #include "taa/taa.h"
 #include "taa/taa_color.glsl"
 
-layout(local_size_x = kTaaGroupSize, local_size_y = kTaaGroupSize) in;
+#include "taa/taa_tile.glsl"
+
 layout(set = 0, binding = 1) uniform sampler2D currentColor;  // nearest
 layout(set = 0, binding = 2) uniform sampler2D depthTex;      // nearest
 layout(set = 0, binding = 3) uniform sampler2D historyColor;  // linear, clamped
@@ -51,30 +52,16 @@ layout(push_constant, scalar) uniform Push { TaaPush pc; };
 // The group's pixels and a one-pixel border, loaded once: each pixel reads its 3×3 neighbourhood from
 // here instead of nine colour and nine depth fetches. xyz: compressed YCoCg colour, w: depth; and the
 // colour's alpha, the composite's reflection weight (split: xyz is the surface part).
-const int kTile = int(kTaaGroupSize) + 2;
+const int kTile = int(kTaaTileSize) + 2;
 shared vec4 tile[kTile * kTile];
 shared float tileReflectionWeight[kTile * kTile];
 #ifdef PPR_TAA_SPLIT
 shared vec3 tileReflection[kTile * kTile];  // the shown reflection where there is one, else 0
 #endif
 
-void main() {
+// Resolves one pixel; `local` is where it is in the shared tile (its tile position + 1, for the border).
+void resolvePixel(ivec2 pix, ivec2 local) {
     ivec2 size = ivec2(frame.screenSize);
-    ivec2 origin = ivec2(gl_WorkGroupID.xy) * int(kTaaGroupSize) - 1;
-    for (uint i = gl_LocalInvocationIndex; i < uint(kTile * kTile); i += kTaaGroupSize * kTaaGroupSize) {
-        ivec2 q = clamp(origin + ivec2(int(i) % kTile, int(i) / kTile), ivec2(0), size - 1);
-        vec4 c = texelFetch(currentColor, q, 0);
-#ifdef PPR_TAA_SPLIT
-        // The composite's weight is non-zero exactly where it blended a reflection.
-        vec3 r = c.a > 0.0 ? texelFetch(shownReflection, q, 0).rgb : vec3(0.0);
-        tileReflection[i] = r;
-        c.rgb -= c.a * r;  // the composite's mix, less its reflection term (exact for grey Fresnel)
-#endif
-        tile[i] = vec4(toYCoCg(compress(c.rgb)), texelFetch(depthTex, q, 0).r);
-        tileReflectionWeight[i] = c.a;
-    }
-    barrier();
-    ivec2 pix = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(pix, size))) return;
 
     // Neighbourhood statistics of the current frame, and the nearest depth around the pixel (so that
@@ -86,7 +73,6 @@ void main() {
 #endif
     float nearestDepth = 0.0;  // reverse-Z: larger is nearer
     ivec2 nearest = ivec2(0);  // where it is (its object's motion is the one taken)
-    ivec2 local = ivec2(gl_LocalInvocationID.xy) + 1;
     for (int y = -1; y <= 1; ++y)
         for (int x = -1; x <= 1; ++x) {
             vec4 t = tile[(local.y + y) * kTile + local.x + x];
@@ -202,4 +188,26 @@ void main() {
 #else
     imageStore(outColor, pix, vec4(outRgb, 1.0));
 #endif
+}
+
+void main() {
+    ivec2 size = ivec2(frame.screenSize);
+    ivec2 origin = tileOrigin() - 1;
+    for (uint i = gl_LocalInvocationIndex; i < uint(kTile * kTile); i += kThreads) {
+        ivec2 q = clamp(origin + ivec2(int(i) % kTile, int(i) / kTile), ivec2(0), size - 1);
+        vec4 c = texelFetch(currentColor, q, 0);
+#ifdef PPR_TAA_SPLIT
+        // The composite's weight is non-zero exactly where it blended a reflection.
+        vec3 r = c.a > 0.0 ? texelFetch(shownReflection, q, 0).rgb : vec3(0.0);
+        tileReflection[i] = r;
+        c.rgb -= c.a * r;  // the composite's mix, less its reflection term (exact for grey Fresnel)
+#endif
+        tile[i] = vec4(toYCoCg(compress(c.rgb)), texelFetch(depthTex, q, 0).r);
+        tileReflectionWeight[i] = c.a;
+    }
+    barrier();
+    for (uint row = 0u; row < kTaaRowsPerInvocation; ++row) {
+        ivec2 p = pixelInTile(row);
+        resolvePixel(tileOrigin() + p, p + 1);
+    }
 }

@@ -2,6 +2,7 @@
 
 #include "common/compute_pass.hpp"
 #include "taa/taa.h"
+#include "taa/taa_threads.hpp"
 #include "taa_average_comp.h"
 #include "taa_comp.h"
 #include "taa_reflection_average_comp.h"
@@ -11,19 +12,30 @@
 
 namespace ppr::passes {
 
-TaaPass::TaaPass(const vk::Context& ctx) : ctx_(ctx) {
+namespace {
+constexpr WorkgroupWidths kWidths{kTaaThreadChoices, gpu::kTaaThreads, gpu::kTaaThreadsGpu};
+static_assert(kWidths.valid(gpu::kTaaTileSize * gpu::kTaaTileSize, gpu::kTaaTileSize),
+              "taa_threads: every choice must give each invocation whole columns' rows of the tile, and hold the defaults");
+
+shader::PipelineLayoutDesc layoutFor(uint32_t pushBytes) {
     shader::PipelineLayoutDesc layout;
-    layout.pushConstantBytes = sizeof(gpu::TaaPush);
-    pipelines_[0][0] = shader::createComputePipeline(ctx, PPR_SPIRV(taa_comp), layout, "taa");
-    pipelines_[0][1] = shader::createComputePipeline(ctx, PPR_SPIRV(taa_average_comp), layout, "taa (average)");
-    pipelines_[1][0] = shader::createComputePipeline(ctx, PPR_SPIRV(taa_split_comp), layout, "taa (split)");
-    pipelines_[1][1] = shader::createComputePipeline(ctx, PPR_SPIRV(taa_split_average_comp), layout, "taa (split, average)");
-    shader::PipelineLayoutDesc reflectionLayout;
-    reflectionLayout.pushConstantBytes = sizeof(gpu::TaaReflectionPush);
-    reflectionPipelines_[0] = shader::createComputePipeline(ctx, PPR_SPIRV(taa_reflection_comp), reflectionLayout, "taa.reflection");
-    reflectionPipelines_[1] =
-        shader::createComputePipeline(ctx, PPR_SPIRV(taa_reflection_average_comp), reflectionLayout, "taa.reflection (average)");
+    layout.pushConstantBytes = pushBytes;
+    return layout;
 }
+}  // namespace
+
+TaaPass::TaaPass(const vk::Context& ctx)
+    : ctx_(ctx),
+      pipelines_{{WidthPipelines(ctx, PPR_SPIRV(taa_comp), layoutFor(sizeof(gpu::TaaPush)), "taa", kWidths),
+                  WidthPipelines(ctx, PPR_SPIRV(taa_average_comp), layoutFor(sizeof(gpu::TaaPush)), "taa (average)", kWidths)},
+                 {WidthPipelines(ctx, PPR_SPIRV(taa_split_comp), layoutFor(sizeof(gpu::TaaPush)), "taa (split)", kWidths),
+                  WidthPipelines(ctx, PPR_SPIRV(taa_split_average_comp), layoutFor(sizeof(gpu::TaaPush)), "taa (split, average)", kWidths)}},
+      reflectionPipelines_{
+          WidthPipelines(ctx, PPR_SPIRV(taa_reflection_comp), layoutFor(sizeof(gpu::TaaReflectionPush)), "taa.reflection", kWidths),
+          WidthPipelines(ctx, PPR_SPIRV(taa_reflection_average_comp), layoutFor(sizeof(gpu::TaaReflectionPush)), "taa.reflection (average)",
+                         kWidths)} {}
+
+uint32_t TaaPass::autoThreads(const vk::DeviceInfo& device) { return kWidths.defaultFor(device); }
 
 TaaReflectionOutput TaaPass::addReflection(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history,
                                           const TaaReflectionInputs& inputs) const {
@@ -41,7 +53,7 @@ TaaReflectionOutput TaaPass::addReflection(graph::RenderGraph& g, const FrameInp
     push.stillSpread = inputs.stillSpread ? gpu::kTaaSpreadSigma : 0.0f;
     const VkSampler nearest = in.samplers->nearestClamp;
     graph::ImageHandle shown, written;
-    ComputePass pass(g, ctx_, "taa.reflection", reflectionPipelines_[inputs.average ? 1 : 0]);
+    ComputePass pass(g, ctx_, "taa.reflection", reflectionPipelines_[inputs.average ? 1 : 0].get(inputs.threads));
     pass.uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
         .sampled(inputs.reflection, nearest)
         .sampled(inputs.depth, nearest)
@@ -55,7 +67,7 @@ TaaReflectionOutput TaaPass::addReflection(graph::RenderGraph& g, const FrameInp
         pass.sampled(samples->previous, in.samplers->linearClamp).storageWrite(samples->current, nullptr);
         pass.sampled(spread->previous, nearest).storageWrite(spread->current, nullptr);
     }
-    pass.push(push).dispatch(in.extent, gpu::kTaaGroupSize);
+    pass.push(push).dispatch(in.extent, gpu::kTaaTileSize);
     return {shown, written};
 }
 
@@ -75,7 +87,7 @@ graph::ImageHandle TaaPass::add(graph::RenderGraph& g, const FrameInputs& in, gr
     const VkSampler nearest = in.samplers->nearestClamp;
     graph::ImageHandle out;
     const bool split = inputs.shownReflection.has_value();
-    ComputePass pass(g, ctx_, "taa", pipelines_[split ? 1 : 0][inputs.average ? 1 : 0]);
+    ComputePass pass(g, ctx_, "taa", pipelines_[split ? 1 : 0][inputs.average ? 1 : 0].get(inputs.threads));
     pass.uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
         .sampled(inputs.hdr, nearest)
         .sampled(inputs.depth, nearest)
@@ -93,7 +105,7 @@ graph::ImageHandle TaaPass::add(graph::RenderGraph& g, const FrameInputs& in, gr
         pass.sampled(spread->previous, nearest).storageWrite(spread->current, nullptr);
     }
     push.keptReflection = split && samples && inputs.reflectionHistory ? 1u : 0u;
-    pass.push(push).dispatch(in.extent, gpu::kTaaGroupSize);
+    pass.push(push).dispatch(in.extent, gpu::kTaaTileSize);
     return out;
 }
 

@@ -5,6 +5,7 @@
 // target gives each pixel's motion slot (per-object motion of an animated scene's moving draws). With
 // taa_average=1 each history has its frame counts beside it ("*.samples", taa_color.glsl blendHistory).
 #include "common/frame_inputs.hpp"
+#include "common/workgroup_widths.hpp"
 #include "graph/history.hpp"
 
 #include <optional>
@@ -18,6 +19,7 @@ struct TaaReflectionInputs {
     uint32_t mode = 0;                           // taa.h kReproject*
     bool average = true;                         // taa_average (taa.h kTaaStillSamples)
     bool stillSpread = true;                     // taa_still_spread (taa.h kTaaSpreadSigma)
+    uint32_t threads = 0;                        // taa_threads: invocations per tile (taa_threads.hpp); 0: the device's default
 };
 
 struct TaaInputs {
@@ -35,6 +37,7 @@ struct TaaInputs {
     bool average = true;  // taa_average (taa.h kTaaStillSamples)
     bool motionCap = true;  // taa_motion_cap (taa.h kTaaMotionCap)
     bool stillSpread = true;  // taa_still_spread (taa.h kTaaSpreadSigma)
+    uint32_t threads = 0;     // taa_threads: invocations per tile (taa_threads.hpp); 0: the device's default
 };
 
 struct TaaReflectionOutput {
@@ -58,6 +61,8 @@ public:
     static constexpr VkFormat kSamplesFormat = VK_FORMAT_R16G16_SFLOAT;
 
     explicit TaaPass(const vk::Context& ctx);
+    // taa_threads=auto: the invocations per tile the device gets (taa.h kTaaThreads, kTaaThreadsGpu).
+    static uint32_t autoThreads(const vk::DeviceInfo& device);
     // Returns the frame's anti-aliased HDR output (the new history itself, unless split).
     graph::ImageHandle add(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history, const TaaInputs& inputs) const;
     // The reflection's own history (taa_reflection*.comp): the accumulated reflection image for the
@@ -67,8 +72,8 @@ public:
 
 private:
     const vk::Context& ctx_;
-    shader::Pipeline pipelines_[2][2];        // [split][average]: taa.comp, taa_average.comp, taa_split*.comp
-    shader::Pipeline reflectionPipelines_[2];  // [average]
+    WidthPipelines pipelines_[2][2];        // [split][average]: taa.comp, taa_average.comp, taa_split*.comp
+    WidthPipelines reflectionPipelines_[2];  // [average]
 };
 
 }  // namespace ppr::passes

@@ -14,7 +14,8 @@
 #include "taa/taa_color.glsl"
 #include "taa/taa_motion.glsl"
 
-layout(local_size_x = kTaaGroupSize, local_size_y = kTaaGroupSize) in;
+#include "taa/taa_tile.glsl"
+
 layout(set = 0, binding = 1) uniform sampler2D reflectionTex;  // common/reflection.h, nearest
 layout(set = 0, binding = 2) uniform sampler2D depthTex;
 layout(set = 0, binding = 3) uniform sampler2D normalTex;
@@ -35,8 +36,7 @@ layout(push_constant, scalar) uniform Push { TaaReflectionPush pc; };
 // A history texel with alpha below this had no reflection, or one of unknown depth.
 const float kKnownDepth = 1e-2;
 
-void main() {
-    ivec2 pix = ivec2(gl_GlobalInvocationID.xy);
+void resolvePixel(ivec2 pix) {
     ivec2 size = ivec2(frame.screenSize);
     if (any(greaterThanEqual(pix, size))) return;
     vec4 current = texelFetch(reflectionTex, pix, 0);
@@ -174,4 +174,8 @@ void main() {
     imageStore(outShown, pix, vec4(rgb, current.a));  // the class code stays the technique's
     float currentW = (frame.viewProj * virtualPoint).w;
     imageStore(outHistory, pix, vec4(rgb, dist > 0.0 ? max(currentW, 2.0 * kKnownDepth) : kKnownDepth * 0.5));
+}
+
+void main() {
+    for (uint row = 0u; row < kTaaRowsPerInvocation; ++row) resolvePixel(tileOrigin() + pixelInTile(row));
 }

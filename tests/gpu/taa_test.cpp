@@ -1,12 +1,15 @@
 // Temporal anti-aliasing (--set taa=1): a still camera converges toward the supersampled reference
 // and, counting its history's frames (taa_average=1), stops flickering once it holds the jitter cycle,
 // on edges too once a pixel's own spread decides its clip (taa_still_spread=1);
-// taa=0 leaves no trace in later frames, and the history resets on resize, technique change and a cut.
+// taa=0 leaves no trace in later frames, and the history resets on resize, technique change and a cut;
+// every taa_threads width gives the same frames.
 #include "gpu_test_util.hpp"
 
 #include "metrics/compare_metrics.hpp"
 #include "metrics/temporal_metrics.hpp"
 #include "taa/taa_pass.hpp"
+#include "taa/taa_threads.hpp"
+#include "vk/live_objects.hpp"
 
 #include <algorithm>
 
@@ -97,6 +100,48 @@ TEST(Taa, StillSpreadKeepsEdgesTheJitterStraddlesStill) {
     const StillShots shots = stillShotsWithAndWithout("overview", "taa_still_spread", 2 * scene::kJitterLength);
     EXPECT_LT(shots.on.flicker, 0.75 * shots.off.flicker);
     EXPECT_GT(shots.on.lastDb, shots.off.lastDb);
+}
+
+// taa_threads only says how many pixels of a tile each invocation resolves: every width gives the
+// same frames, bit for bit, in each of the six resolve shaders (split or whole colour, counted frames
+// or not), under camera motion, with the bobbing ball moving and at a size whose last tiles are
+// partial. One pipeline per width and shader, made once.
+TEST(Taa, EveryWidthGivesTheSameFrames) {
+    GpuFixture f;
+    f.headless->setTechnique("ppr");
+    f.headless->settings().set("taa", "1");
+    constexpr VkExtent2D kOdd{333, 187};
+    constexpr uint32_t kFrames = 6;
+    const scene::CameraPose start = f.camera("puddles");
+    const auto shot = [&] {
+        std::vector<std::vector<uint8_t>> frames;
+        for (uint32_t k = 0; k < kFrames; ++k) {
+            scene::CameraPose pose = start;
+            pose.position.x += 0.03f * float(k);  // a strafe: the histories are fetched between texels
+            f.headless->setSceneTime(0.1 * k);
+            frames.push_back(f.headless->capture(pose, kOdd, 1, false, false, k == 0).image.pixels);
+        }
+        return frames;
+    };
+    for (const auto& [split, average] : {std::pair{"1", "1"}, std::pair{"0", "1"}, std::pair{"1", "0"}, std::pair{"0", "0"}}) {
+        f.headless->settings().set("taa_split", split);
+        f.headless->settings().set("taa_average", average);
+        const std::string variant = std::string("taa_split=") + split + " taa_average=" + average;
+        f.headless->settings().set("taa_threads", std::to_string(passes::kTaaThreadChoices.front()));
+        const std::vector<std::vector<uint8_t>> reference = shot();
+        for (uint32_t width : passes::kTaaThreadChoices) {
+            f.headless->settings().set("taa_threads", std::to_string(width));
+            const std::vector<std::vector<uint8_t>> frames = shot();
+            for (uint32_t k = 0; k < kFrames; ++k)
+                EXPECT_EQ(frames[k], reference[k]) << variant << ", taa_threads=" << width << ": frame " << k << " differs";
+        }
+    }
+    f.headless->setSceneTime(std::nullopt);
+    f.headless->settings().set("taa_threads", "auto");
+    const int64_t pipelines = vk::liveObjects().pipelines;
+    shot();
+    EXPECT_EQ(vk::liveObjects().pipelines, pipelines);  // every width's pipelines were made once, above
+    EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
 
 TEST(Taa, OffLeavesNoTraceInLaterFrames) {
