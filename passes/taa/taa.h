@@ -61,7 +61,7 @@ struct TaaReflectionPush {
     uint historyValid;
     uint mode;         // kReproject*
     uint hasDistance;  // 0: the technique gave no path lengths; candidates and virtual use the surface's motion
-    float stillSpread;  // taa_still_spread with taa_average: kTaaSpreadSigma, or 0 (off: the 3×3 box alone)
+    float stillSpread;  // taa_still_spread with taa_average: kTaaSpreadSigma, or 0 (off: the 3×3 box alone; the moments image is a stand-in)
 };
 PPR_END
 PPR_SIZE_CHECK(TaaReflectionPush, 16);
@@ -76,7 +76,7 @@ struct TaaPush {
     // one its reflection history kept (a still rim pixel), before a neighbour's
     uint keptReflection;
     float motionCap;  // taa_motion_cap with taa_average: kTaaMotionCap, or 0 (off: the feedback alone)
-    float stillSpread;  // taa_still_spread with taa_average: kTaaSpreadSigma, or 0 (off: the 3×3 box alone)
+    float stillSpread;  // taa_still_spread with taa_average: kTaaSpreadSigma, or 0 (off: the 3×3 box alone; the moments image is a stand-in)
 };
 PPR_END
 PPR_SIZE_CHECK(TaaPush, 20);

@@ -142,7 +142,7 @@ void resolvePixel(ivec2 pix, ivec2 local) {
 #endif
         vec3 history = toYCoCg(compress(historyRgb));
 #ifdef PPR_TAA_AVERAGE
-        HistoryBlend blend = blendHistory(currentY, history, mean, sigma, historyUv, historySamples, historySpread,
+        HistoryBlend blend = blendHistory(currentY, history, mean, sigma, historyUv, historySamples, historySpread, pc.stillSpread > 0.0,
                                           motionFeedbackCap(historyUv, pc.motionCap), pc.stillSpread);
         history = blend.history;
         float feedback = blend.feedback;
@@ -167,7 +167,7 @@ void resolvePixel(ivec2 pix, ivec2 local) {
     }
 #ifdef PPR_TAA_AVERAGE
     imageStore(outSamples, pix, vec4(samples, 0.0, 0.0));
-    imageStore(outSpread, pix, vec4(spread, 0.0, 0.0));
+    if (pc.stillSpread > 0.0) imageStore(outSpread, pix, vec4(spread, 0.0, 0.0));
 #endif
     vec3 outRgb = expand(fromYCoCg(resolved));
     // A non-finite history (never expected) must not live on in every later frame.

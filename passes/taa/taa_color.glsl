@@ -62,12 +62,13 @@ struct HistoryBlend {
 // them until the box no longer holds them, or, with `spreadSigma` > 0 (taa.h kTaaSpreadSigma), until the
 // frame's luma leaves the spread the run has shown. No share above `feedbackCap` (motionFeedbackCap, or 1).
 HistoryBlend blendHistory(vec3 currentY, vec3 historyY, vec3 mean, vec3 sigma, vec2 historyUv, sampler2D samplesTex, sampler2D spreadTex,
-                          float feedbackCap, float spreadSigma) {
+                          bool spreadKept, float feedbackCap, float spreadSigma) {
     bool still = atTexelCentre(historyUv);
     vec3 h = clipToBox(historyY, mean, (still ? kTaaStillClipSigma : kTaaClipSigma) * sigma + vec3(1e-4));
     vec2 held = textureLod(samplesTex, historyUv, 0.0).xy;  // bilinear, as the history (a texel centre: that texel)
-    // Only a still pixel's run has moments, read at its texel (the history's, to 1/512 pixel).
-    vec2 run = still ? texelFetch(spreadTex, nearestTexel(historyUv), 0).xy : vec2(0.0);
+    // Only a still pixel's run has moments, read at its texel (the history's, to 1/512 pixel), and only
+    // where they are kept (`spreadKept`: taa_still_spread=1; otherwise spreadTex is a stand-in).
+    vec2 run = still && spreadKept ? texelFetch(spreadTex, nearestTexel(historyUv), 0).xy : vec2(0.0);
     // A still pixel whose frame lies within the spread its own still run has shown keeps its history
     // whole: one jittered frame's neighbourhood may sit on one side of an edge the cycle straddles.
     if (spreadSigma > 0.0 && still && held.y >= kTaaSpreadSamples &&

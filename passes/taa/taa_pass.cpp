@@ -17,6 +17,14 @@ constexpr WorkgroupWidths kWidths{kTaaThreadChoices, gpu::kTaaThreads, gpu::kTaa
 static_assert(kWidths.valid(gpu::kTaaTileSize * gpu::kTaaTileSize, gpu::kTaaTileSize),
               "taa_threads: every choice must give each invocation whole columns' rows of the tile, and hold the defaults");
 
+// A still run's moments (taa_color.glsl), or with taa_still_spread=0 stand-ins the shader never touches
+// (its stillSpread is 0): no history image, and no store per pixel.
+void bindSpread(graph::RenderGraph& g, ComputePass& pass, const std::optional<graph::HistoryImage>& spread, const char* standInName,
+                graph::ImageHandle unread, VkSampler nearest) {
+    if (spread) pass.sampled(spread->previous, nearest).storageWrite(spread->current, nullptr);
+    else pass.sampled(unread, nearest).storageWrite(g.createImage(standInName, {1, 1, TaaPass::kSamplesFormat, 1}), nullptr);
+}
+
 shader::PipelineLayoutDesc layoutFor(uint32_t pushBytes) {
     shader::PipelineLayoutDesc layout;
     layout.pushConstantBytes = pushBytes;
@@ -44,10 +52,10 @@ TaaReflectionOutput TaaPass::addReflection(graph::RenderGraph& g, const FrameInp
     std::optional<graph::HistoryImage> spread;
     if (inputs.average) {
         samples = g.history(history, kReflectionSamplesName, {in.extent.width, in.extent.height, kSamplesFormat, 1});
-        spread = g.history(history, kReflectionSpreadName, {in.extent.width, in.extent.height, kSamplesFormat, 1});
+        if (inputs.stillSpread) spread = g.history(history, kReflectionSpreadName, {in.extent.width, in.extent.height, kSamplesFormat, 1});
     }
     gpu::TaaReflectionPush push{};
-    push.historyValid = h.previousValid && (!samples || (samples->previousValid && spread->previousValid)) ? 1u : 0u;
+    push.historyValid = h.previousValid && (!samples || samples->previousValid) && (!spread || spread->previousValid) ? 1u : 0u;
     push.mode = inputs.mode;
     push.hasDistance = inputs.distance ? 1u : 0u;
     push.stillSpread = inputs.stillSpread ? gpu::kTaaSpreadSigma : 0.0f;
@@ -65,7 +73,7 @@ TaaReflectionOutput TaaPass::addReflection(graph::RenderGraph& g, const FrameInp
         .hostStorage(in.motion);  // a moving reflected point's motion slot (the path image's tag)
     if (samples) {
         pass.sampled(samples->previous, in.samplers->linearClamp).storageWrite(samples->current, nullptr);
-        pass.sampled(spread->previous, nearest).storageWrite(spread->current, nullptr);
+        bindSpread(g, pass, spread, "taa.reflection.spread.unused", inputs.depth, nearest);
     }
     pass.push(push).dispatch(in.extent, gpu::kTaaTileSize);
     return {shown, written};
@@ -77,10 +85,10 @@ graph::ImageHandle TaaPass::add(graph::RenderGraph& g, const FrameInputs& in, gr
     std::optional<graph::HistoryImage> spread;
     if (inputs.average) {
         samples = g.history(history, kSamplesName, {in.extent.width, in.extent.height, kSamplesFormat, 1});
-        spread = g.history(history, kSpreadName, {in.extent.width, in.extent.height, kSamplesFormat, 1});
+        if (inputs.stillSpread) spread = g.history(history, kSpreadName, {in.extent.width, in.extent.height, kSamplesFormat, 1});
     }
     gpu::TaaPush push{};
-    push.historyValid = h.previousValid && (!samples || (samples->previousValid && spread->previousValid)) ? 1u : 0u;
+    push.historyValid = h.previousValid && (!samples || samples->previousValid) && (!spread || spread->previousValid) ? 1u : 0u;
     push.reflectionMotion = inputs.reflectedPath ? 1u : 0u;
     push.motionCap = inputs.motionCap ? gpu::kTaaMotionCap : 0.0f;
     push.stillSpread = inputs.stillSpread ? gpu::kTaaSpreadSigma : 0.0f;
@@ -102,7 +110,7 @@ graph::ImageHandle TaaPass::add(graph::RenderGraph& g, const FrameInputs& in, gr
     if (samples) {
         pass.sampled(samples->previous, in.samplers->linearClamp).storageWrite(samples->current, nullptr);
         if (split) pass.sampled(inputs.reflectionHistory.value_or(inputs.depth), nearest);  // unread without one (pc.keptReflection 0)
-        pass.sampled(spread->previous, nearest).storageWrite(spread->current, nullptr);
+        bindSpread(g, pass, spread, "taa.color.spread.unused", inputs.depth, nearest);
     }
     push.keptReflection = split && samples && inputs.reflectionHistory ? 1u : 0u;
     pass.push(push).dispatch(in.extent, gpu::kTaaTileSize);

@@ -57,7 +57,7 @@ void resolvePixel(ivec2 pix) {
         if (kept.a <= 0.0) keptSamples = vec2(0.0);
         imageStore(outHistory, pix, kept);
         imageStore(outSamples, pix, vec4(keptSamples, 0.0, 0.0));
-        imageStore(outSpread, pix, keptSamples.x > 0.0 ? texelFetch(historySpread, pix, 0) : vec4(0.0));
+        if (pc.stillSpread > 0.0) imageStore(outSpread, pix, keptSamples.x > 0.0 ? texelFetch(historySpread, pix, 0) : vec4(0.0));
 #else
         imageStore(outHistory, pix, vec4(0.0));
 #endif
@@ -153,7 +153,7 @@ void resolvePixel(ivec2 pix) {
         if (hadReflection && !disoccluded) {
 #ifdef PPR_TAA_AVERAGE
             HistoryBlend blend = blendHistory(currentY, toYCoCg(compress(history.rgb)), mean, sigma, historyUv, historySamples, historySpread,
-                                              1.0, stillSpread);
+                                              pc.stillSpread > 0.0, 1.0, stillSpread);
             vec3 h = blend.history;
             float feedback = blend.feedback;
             samples = blend.samples;
@@ -169,7 +169,7 @@ void resolvePixel(ivec2 pix) {
     if (any(isnan(rgb)) || any(isinf(rgb))) rgb = current.rgb;
 #ifdef PPR_TAA_AVERAGE
     imageStore(outSamples, pix, vec4(samples, 0.0, 0.0));
-    imageStore(outSpread, pix, vec4(spread, 0.0, 0.0));
+    if (pc.stillSpread > 0.0) imageStore(outSpread, pix, vec4(spread, 0.0, 0.0));
 #endif
     imageStore(outShown, pix, vec4(rgb, current.a));  // the class code stays the technique's
     float currentW = (frame.viewProj * virtualPoint).w;

@@ -144,6 +144,26 @@ TEST(Taa, EveryWidthGivesTheSameFrames) {
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
 
+// taa_still_spread=0 costs what the resolves cost before the spread: no moments image is kept, read or
+// written (a stand-in is bound), and the frames are those of that build (docs/temporal.md, Cost).
+TEST(Taa, StillSpreadOffKeepsNoMomentsImage) {
+    GpuFixture f;
+    f.headless->setTechnique("ppr");
+    f.headless->settings().set("taa", "1");
+    f.headless->settings().set("taa_still_spread", "0");
+    const scene::CameraPose cam = f.camera("overview");
+    const graph::HistoryStore& store = f.renderer->executor().history();
+    f.headless->capture(cam, kSize, 3);
+    EXPECT_TRUE(store.contains(passes::TaaPass::kSamplesName));
+    EXPECT_FALSE(store.contains(passes::TaaPass::kSpreadName));
+    EXPECT_FALSE(store.contains(passes::TaaPass::kReflectionSpreadName));
+    f.headless->settings().set("taa_still_spread", "1");
+    f.headless->capture(cam, kSize, 3);
+    EXPECT_TRUE(store.contains(passes::TaaPass::kSpreadName));
+    EXPECT_TRUE(store.contains(passes::TaaPass::kReflectionSpreadName));
+    EXPECT_EQ(f.ctx->validationErrors(), 0u);
+}
+
 TEST(Taa, OffLeavesNoTraceInLaterFrames) {
     GpuFixture f;
     f.headless->setTechnique("ppr");
