@@ -227,34 +227,53 @@ struct Layout {
 
 // Everything is sized from the text scale: 2x stb_easy_font glyphs (14 px capitals) for charts
 // big enough to go into the docs, 1x for thumbnails.
-Layout computeLayout(const PlotSpec& spec, uint32_t width, uint32_t height) {
-    validate(spec);
+Layout scaledLayout(uint32_t width, uint32_t height) {
     Layout L{};
     const int s = std::min(width, height) >= 360 ? 2 : 1;
     L.scale = s, L.lineH = 12 * s, L.capH = 7 * s, L.pad = 8 * s, L.gap = 4 * s, L.tickLen = 4 * s;
     L.markerR = 2 + s, L.swatchW = 20 * s;
-    const int W = static_cast<int>(width), H = static_cast<int>(height);
+    return L;
+}
 
-    // Title, then the legend in rows of entries (swatch, name) wrapped to the image width.
-    L.titleY = L.pad;
-    int y = L.pad + (spec.title.empty() ? 0 : L.lineH + L.gap);
-    std::vector<int> entryW;
-    for (const PlotSeries& ser : spec.series) entryW.push_back(L.swatchW + L.gap + textWidth(ser.name, s));
+// The title, then the legend in rows of entries (swatch, name) wrapped to the image width: each
+// entry's offset within the legend block, the block's widest row and where the plot area may begin.
+struct LegendBlock {
+    std::vector<std::array<int, 2>> rel;
+    int y = 0, width = 0, plotTop = 0;
+};
+LegendBlock legendBlock(const PlotSpec& spec, const Layout& L, int W) {
+    const int s = L.scale;
+    LegendBlock b;
+    b.y = L.pad + (spec.title.empty() ? 0 : L.lineH + L.gap);
     const int entrySpacing = 14 * s;
-    std::vector<std::array<int, 2>> rel;  // entry offsets within the legend block
-    int x = 0, rowY = 0, legendW = 0;
-    for (int w : entryW) {
+    int x = 0, rowY = 0;
+    for (const PlotSeries& ser : spec.series) {
+        const int w = L.swatchW + L.gap + textWidth(ser.name, s);
         if (x > 0 && x + w > W - 2 * L.pad) x = 0, rowY += L.lineH;
-        rel.push_back({x, rowY});
+        b.rel.push_back({x, rowY});
         x += w + entrySpacing;
-        legendW = std::max(legendW, x - entrySpacing);
+        b.width = std::max(b.width, x - entrySpacing);
     }
-    const int legendY = y;
-    y += rowY + L.lineH + L.gap;
+    b.plotTop = b.y + rowY + L.lineH + L.gap + L.capH / 2 + s;  // room for half of the top tick label
+    return b;
+}
+
+// Below the plot area: the x ticks, their labels and the axis label.
+int bottomMargin(const PlotSpec& spec, const Layout& L) { return L.pad + L.tickLen + L.gap + L.lineH + (spec.xLabel.empty() ? 0 : L.lineH); }
+
+Layout computeLayout(const PlotSpec& spec, uint32_t width, uint32_t height) {
+    validate(spec);
+    Layout L = scaledLayout(width, height);
+    const int s = L.scale;
+    const int W = static_cast<int>(width), H = static_cast<int>(height);
+    L.titleY = L.pad;
+    const LegendBlock legend = legendBlock(spec, L, W);
+    const std::vector<std::array<int, 2>>& rel = legend.rel;
+    const int legendY = legend.y, legendW = legend.width;
 
     // Vertical extent first: the y ticks depend on the plot height, the left margin on their labels.
-    L.plotT = y + L.capH / 2 + s;  // room for half of the top tick label
-    L.plotB = H - 1 - (L.pad + L.tickLen + L.gap + L.lineH + (spec.xLabel.empty() ? 0 : L.lineH));
+    L.plotT = legend.plotTop;
+    L.plotB = H - 1 - bottomMargin(spec, L);
     if (L.plotB - L.plotT < 16) throw std::invalid_argument("plot '" + spec.title + "': image too small");
     std::vector<double> xs, ys;
     for (const PlotSeries& ser : spec.series)
@@ -284,6 +303,17 @@ double PlotAxis::toPixel(double v) const {
     // log2 so that powers of 2 on a powers-of-2 axis land exactly (the base cancels out).
     const double f = log ? (std::log2(v) - std::log2(lo)) / (std::log2(hi) - std::log2(lo)) : (v - lo) / (hi - lo);
     return pixelLo + f * (pixelHi - pixelLo);
+}
+
+uint32_t plotHeightFor(const PlotSpec& spec, uint32_t width, uint32_t minHeight, uint32_t plotAreaHeight) {
+    uint32_t height = minHeight;
+    for (int pass = 0; pass < 2; ++pass) {  // a taller image may take the larger text scale, whose legend is taller
+        const Layout L = scaledLayout(width, height);
+        const LegendBlock legend = legendBlock(spec, L, static_cast<int>(width));
+        const int needed = legend.plotTop + static_cast<int>(plotAreaHeight) + 1 + bottomMargin(spec, L);
+        height = std::max(height, static_cast<uint32_t>(needed));
+    }
+    return height;
 }
 
 PlotFrame plotFrame(const PlotSpec& spec, uint32_t width, uint32_t height) {

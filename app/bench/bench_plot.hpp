@@ -57,6 +57,11 @@ std::array<uint8_t, 3> plotSeriesColour(size_t i);
 // non-finite values, values <= 0 on a log axis, or a size too small for the plot area.
 util::Rgba8Image renderPlot(const PlotSpec& spec, uint32_t width, uint32_t height);
 
+// The least height, at least `minHeight`, at which renderPlot(spec, width, height) leaves a plot area
+// `plotAreaHeight` pixels tall whatever rows the legend wraps into: for charts whose series are the
+// user's (a compare row per technique variant, with long names).
+uint32_t plotHeightFor(const PlotSpec& spec, uint32_t width, uint32_t minHeight, uint32_t plotAreaHeight);
+
 // Charts placed left to right with no gap (each has its own margins): the width is the sum of
 // the widths. Throws std::invalid_argument on no charts, differing heights, or pixels that do not
 // match a chart's size.

@@ -141,7 +141,10 @@ int runComparePath(const Options& o) {
         }
         util::writeTextFile(dir / "temporal.csv", csv.str());
         util::writePng((dir / "strip.png").string(), makeContactSheet(strip, 4));
-        util::writePng((dir / "temporal.png").string(), sideBySide({renderPlot(whole, 640, 400), renderPlot(reflectors, 640, 400)}));
+        // As tall as the longer legend needs (one row per technique variant), the two side by side.
+        const uint32_t plotHeight = std::max(plotHeightFor(whole, 640, 400, 200), plotHeightFor(reflectors, 640, 400, 200));
+        util::writePng((dir / "temporal.png").string(),
+                       sideBySide({renderPlot(whole, 640, plotHeight), renderPlot(reflectors, 640, plotHeight)}));
         metrics["images"] = {{"plot", "temporal.png"}, {"csv", "temporal.csv"}, {"strip", "strip.png"}, {"reference_last_frame", "reference/" + frameFile("", poses.size() - 1).substr(1)}};
         metrics["validation"] = ctx.validationEnabled();
         metrics["validation_errors"] = ctx.validationErrors() - errorsBefore;

@@ -217,3 +217,24 @@ TEST(BenchPlot, SideBySideWidthsAddUp) {
     EXPECT_THROW(sideBySide({}), std::invalid_argument);
     EXPECT_THROW(sideBySide({a, renderPlot(benchLike(), 300, 250)}), std::invalid_argument);
 }
+
+// A compare path run plots one series per row, whose names are the user's (`ssr-brute@taa=1,...`):
+// the legend wraps into as many rows as they need, and plotHeightFor grows the image so that the plot
+// area keeps its height, where a fixed 400 px left no room and the run ended in an error.
+TEST(BenchPlot, HeightForKeepsThePlotAreaWhateverTheLegend) {
+    const PlotSpec few = benchLike();
+    EXPECT_EQ(plotHeightFor(few, 640, 400, 200), 400u);  // two short names: the usual size
+    PlotSpec many{"whole frame vs 16x supersampled planar", "frame", "PSNR dB", false, false, {}};
+    for (int i = 0; i < 12; ++i)
+        many.series.push_back({"ssr-brute@taa=1,taa_still_spread=0,variant_" + std::to_string(i), {0, 1, 2}, {10.0 * i, 10.0 * i + 3, 10.0 * i + 6}});  // apart: markers do not overlap
+    EXPECT_THROW(renderPlot(many, 640, 400), std::invalid_argument);
+    const uint32_t height = plotHeightFor(many, 640, 400, 200);
+    EXPECT_GT(height, 400u);
+    const Rgba8Image img = renderPlot(many, 640, height);
+    EXPECT_EQ(img.height, height);
+    const PlotFrame f = plotFrame(many, 640, height);
+    EXPECT_GE(f.y.pixelLo - f.y.pixelHi, 200.0);  // y runs up: pixelLo is the bottom
+    expectPointsAtFramePixels(many, img, f);
+    // Small images keep the small text scale; the height still fits.
+    EXPECT_NO_THROW(renderPlot(many, 320, plotHeightFor(many, 320, 200, 100)));
+}
