@@ -46,6 +46,16 @@ rows_for() {  # technique → its rows: defaults, then one row per non-default v
   done
 }
 
+taa_rows_for() {  # technique → its TAA rows: taa=1, then taa=1 with each non-default value of each other taa setting
+  local t="$1"
+  echo "$t@taa=1"
+  printf '%s\n' "$help" | sed -nE 's/^    ([a-z_]+)=([^ ]*) \(default ([^;]*); taa\)$/\1 \2 \3/p' | while read -r key values def; do
+    [ "$key" = taa ] && continue
+    values="${values//|/ }"
+    for v in $values; do [ "$v" != "$def" ] && echo "$t@taa=1,$key=$v"; done
+  done
+}
+
 runs=0; failed=0; rows_total=0; errors_total=0
 summary="$out/summary.txt"; : >"$summary"
 run() {  # name, then ppr compare arguments
@@ -74,6 +84,18 @@ for t in "${techniques[@]}"; do
   done < <(rows_for "$t")
   [ ${#args[@]} -eq 0 ] && continue
   for cam in $cameras; do run "$t-$cam" --camera "$cam" --size "$size" "${args[@]}"; done
+done
+
+# TAA's settings act only with taa=1, and its histories from the second frame on: each technique's TAA
+# rows over 3 frames of a strafe (camera motion; every resolve shader and history, its cross-frame barriers).
+for t in "${techniques[@]}"; do
+  args=()
+  while read -r row; do
+    if [ $((index % shard_n)) -eq "$shard_k" ]; then args+=(--technique "$row"); fi
+    index=$((index + 1))
+  done < <(taa_rows_for "$t")
+  [ ${#args[@]} -eq 0 ] && continue
+  run "$t-taa" --path strafe --frames 3 --camera puddles --size "$size" "${args[@]}"
 done
 
 # The extremes: atlas sizes, 1 and 1024 reflectors, sizes from one pixel to the PPR limit. "small"
