@@ -76,26 +76,28 @@ run() {  # name, then ppr compare arguments
 }
 
 index=0
-for t in "${techniques[@]}"; do
-  args=()
+kept=()
+keep_shard() {  # a rows function and a technique → kept: the --technique arguments of this shard's rows
+  local row
+  kept=()
   while read -r row; do
-    if [ $((index % shard_n)) -eq "$shard_k" ]; then args+=(--technique "$row"); fi
+    if [ $((index % shard_n)) -eq "$shard_k" ]; then kept+=(--technique "$row"); fi
     index=$((index + 1))
-  done < <(rows_for "$t")
-  [ ${#args[@]} -eq 0 ] && continue
-  for cam in $cameras; do run "$t-$cam" --camera "$cam" --size "$size" "${args[@]}"; done
+  done < <("$1" "$2")
+}
+
+for t in "${techniques[@]}"; do
+  keep_shard rows_for "$t"
+  [ ${#kept[@]} -eq 0 ] && continue
+  for cam in $cameras; do run "$t-$cam" --camera "$cam" --size "$size" "${kept[@]}"; done
 done
 
 # TAA's settings act only with taa=1, and its histories from the second frame on: each technique's TAA
 # rows over 3 frames of a strafe (camera motion; every resolve shader and history, its cross-frame barriers).
 for t in "${techniques[@]}"; do
-  args=()
-  while read -r row; do
-    if [ $((index % shard_n)) -eq "$shard_k" ]; then args+=(--technique "$row"); fi
-    index=$((index + 1))
-  done < <(taa_rows_for "$t")
-  [ ${#args[@]} -eq 0 ] && continue
-  run "$t-taa" --path strafe --frames 3 --camera puddles --size "$size" "${args[@]}"
+  keep_shard taa_rows_for "$t"
+  [ ${#kept[@]} -eq 0 ] && continue
+  run "$t-taa" --path strafe --frames 3 --camera puddles --size "$size" "${kept[@]}"
 done
 
 # The extremes: atlas sizes, 1 and 1024 reflectors, sizes from one pixel to the PPR limit. "small"
