@@ -7,8 +7,8 @@
 // into shared memory). An invocation resolves a column of 256 / threads pixels, one above the other:
 // --set taa_threads (specialization constant 0). On a CPU device 16 (a whole column each), because
 // lavapipe runs a workgroup's invocations as 8-wide SIMD batches and switches between all of them at a
-// barrier, and even without one pays per batch: 16 invocations made `taa` 30 % and `taa.reflection`
-// 25 % cheaper than 256 at 1280x720 (docs/temporal.md, Cost); on a GPU 256, one pixel each.
+// barrier, and even without one pays per batch: 16 invocations made `taa` 27 % and `taa.reflection`
+// 35 % cheaper than 256 at 1280x720 (docs/temporal.md, Cost); on a GPU 256, one pixel each.
 PPR_CONST(uint, kTaaTileSize, 16u)
 PPR_CONST(uint, kTaaThreads, 16u)
 PPR_CONST(uint, kTaaThreadsGpu, 256u)

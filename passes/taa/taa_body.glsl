@@ -49,7 +49,7 @@ layout(set = 0, binding = kSpreadBinding + 1, rg16f) uniform writeonly image2D o
 #include "taa/reflection_motion.glsl"
 layout(push_constant, scalar) uniform Push { TaaPush pc; };
 
-// The group's pixels and a one-pixel border, loaded once: each pixel reads its 3×3 neighbourhood from
+// The tile's pixels and a one-pixel border, loaded once: each pixel reads its 3×3 neighbourhood from
 // here instead of nine colour and nine depth fetches. xyz: compressed YCoCg colour, w: depth; and the
 // colour's alpha, the composite's reflection weight (split: xyz is the surface part).
 const int kTile = int(kTaaTileSize) + 2;

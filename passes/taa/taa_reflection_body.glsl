@@ -36,6 +36,7 @@ layout(push_constant, scalar) uniform Push { TaaReflectionPush pc; };
 // A history texel with alpha below this had no reflection, or one of unknown depth.
 const float kKnownDepth = 1e-2;
 
+// Resolves one pixel (main: the invocation's column of its tile).
 void resolvePixel(ivec2 pix) {
     ivec2 size = ivec2(frame.screenSize);
     if (any(greaterThanEqual(pix, size))) return;
