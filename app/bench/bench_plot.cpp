@@ -268,8 +268,6 @@ Layout computeLayout(const PlotSpec& spec, uint32_t width, uint32_t height) {
     const int W = static_cast<int>(width), H = static_cast<int>(height);
     L.titleY = L.pad;
     const LegendBlock legend = legendBlock(spec, L, W);
-    const std::vector<std::array<int, 2>>& rel = legend.rel;
-    const int legendY = legend.y, legendW = legend.width;
 
     // Vertical extent first: the y ticks depend on the plot height, the left margin on their labels.
     L.plotT = legend.plotTop;
@@ -290,8 +288,8 @@ Layout computeLayout(const PlotSpec& spec, uint32_t width, uint32_t height) {
                          [s](double t) { return double(textWidth(formatTick(t), s)); }, 18.0 * s);
 
     // Legend aligned with the plot area when it fits there, else with the image margin.
-    const int legendX = L.plotL + legendW <= W - L.pad ? L.plotL : L.pad;
-    for (auto [ex, ey] : rel) L.legendPos.push_back({legendX + ex, legendY + ey});
+    const int legendX = L.plotL + legend.width <= W - L.pad ? L.plotL : L.pad;
+    for (auto [ex, ey] : legend.rel) L.legendPos.push_back({legendX + ex, legend.y + ey});
     return L;
 }
 
