@@ -29,7 +29,7 @@ std::optional<gpu::PprFrameStats> FrameStatsBuffers::read(uint32_t slot) const {
 
 passes::HizAtlas TechniqueFrame::depthHierarchy() {
     if (const DepthHierarchy* built = board.find<DepthHierarchy>()) return built->atlas;
-    const passes::HizAtlas hiz = services.hiz.add(graph, in, gbuffer.depth);
+    const passes::HizAtlas hiz = services.hiz.add(graph, in, gbuffer.depth, settings.ssr.hizThreads);
     board.put(DepthHierarchy{hiz});
     return hiz;
 }

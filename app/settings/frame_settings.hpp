@@ -44,6 +44,7 @@ struct PprSettings {         // owner: ppr
 struct SsrSettings {         // owner: ssr (the four ssr-* techniques and PPR's fallback)
     float distance, thickness, thicknessScale;
     uint32_t steps;
+    uint32_t hizThreads;     // the depth hierarchy build's invocations per cell (passes/hiz/hiz_threads.hpp); 0: auto
 };
 struct GlassSettings {       // owner: glass (PPR's glass atlas and the planar reference's)
     bool enabled;

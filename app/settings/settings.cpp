@@ -1,6 +1,7 @@
 #include "settings/settings.hpp"
 
 #include "common/frame.h"
+#include "hiz/hiz_threads.hpp"
 #include "ppr_project/project_threads.hpp"
 #include "ppr_reach/reach_threads.hpp"
 #include "taa/taa_threads.hpp"
@@ -186,6 +187,9 @@ const std::vector<SettingDecl>& settingDecls() {
                "SSR: thickness added per metre of view distance"),
         integer("ssr_steps", "ssr", [](FrameSettings& s) -> uint32_t& { return s.ssr.steps; }, 4096, 1, 65536,
                 "SSR: most march iterations per ray (the default never cuts a ray short on screen)"),
+        widthSetting("hiz_threads", "ssr", [](FrameSettings& s) -> uint32_t& { return s.ssr.hizThreads; }, passes::kHizThreadChoices,
+                     "depth hierarchy build (ssr-hiz, PPR's fallback): invocations per 64x64 cell, one dispatch for every level "
+                     "(auto: 16 on a CPU device, 256 on a GPU); the same hierarchy with any"),
         toggle("glass", "glass", [](FrameSettings& s) -> bool& { return s.glass.enabled; }, true,
                "PPR reflections in glass panels, through the glass atlas (0: glass only transmits)"),
         integer("glass_atlas", "glass", [](FrameSettings& s) -> uint32_t& { return s.glass.atlas; }, 1024, 64, 8192,

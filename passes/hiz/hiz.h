@@ -16,18 +16,14 @@
 
 PPR_CONST(uint, kHizLevels, 7u)        // levels 0..6: the coarsest cell is 64 px
 PPR_CONST(float, kHizEmpty, 1.0f)      // sky and padding
-PPR_CONST(uint, kHizGroupSize, 16u)
-
-PPR_BEGIN
-struct HizBuildPush {
-    ivec2 srcOrigin;  // the level below in the atlas (level ≥ 2)
-    ivec2 dstOrigin;  // the level written
-    uvec2 dstSize;    // its size in texels
-    uint level;       // 1: from the depth buffer
-    uint pad;
-};
-PPR_END
-PPR_SIZE_CHECK(HizBuildPush, 32);
+// The build is one dispatch, a workgroup per coarsest cell (hiz_build.comp). Its invocations each
+// reduce a square block of the cell alone, up to the block's one texel, and the group reduces those,
+// a level per barrier: --set hiz_threads (specialization constant 0; 16, 64 or 256 invocations:
+// blocks of 16, 8 or 4 level-0 texels a side). On a CPU device 16, because lavapipe runs a
+// workgroup's invocations as 8-wide SIMD batches and pays per batch, most at a barrier; on a GPU
+// 256, so that many invocations share the reads.
+PPR_CONST(uint, kHizThreads, 16u)
+PPR_CONST(uint, kHizThreadsGpu, 256u)
 
 PPR_BEGIN
 // The screen padded up to a multiple of the coarsest cell.

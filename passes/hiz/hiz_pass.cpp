@@ -2,33 +2,38 @@
 
 #include "common/compute_pass.hpp"
 #include "hiz/hiz.h"
+#include "hiz/hiz_threads.hpp"
 #include "hiz_build_comp.h"
 
 namespace ppr::passes {
 
-HizPass::HizPass(const vk::Context& ctx) : ctx_(ctx) {
-    shader::PipelineLayoutDesc layout;
-    layout.pushConstantBytes = sizeof(gpu::HizBuildPush);
-    pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(hiz_build_comp), layout, "hiz.build");
+namespace {
+constexpr uint32_t kCell = 1u << (gpu::kHizLevels - 1u);
+constexpr WorkgroupWidths kWidths{kHizThreadChoices, gpu::kHizThreads, gpu::kHizThreadsGpu};
+constexpr bool powersOfFour() {
+    for (uint32_t w : kHizThreadChoices)
+        if (w < 16u || (w & (w - 1u)) != 0u || (w & 0x55555555u) == 0u) return false;
+    return true;
 }
+// At least 16: a block must stop above level 1 (hiz_build.comp's walk finishes a level-2 texel or more).
+static_assert(kWidths.valid(kCell * kCell / 4u, 16u) && powersOfFour() && kHizThreadChoices.back() <= kCell * kCell / 16u,
+              "hiz_threads: powers of four from 16, square blocks of at least 4x4 level-0 texels, holding the defaults");
+}  // namespace
 
-HizAtlas HizPass::add(graph::RenderGraph& g, const FrameInputs& in, graph::ImageHandle depth) const {
+HizPass::HizPass(const vk::Context& ctx) : ctx_(ctx), pipelines_(ctx, PPR_SPIRV(hiz_build_comp), {}, "hiz.build", kWidths) {}
+
+uint32_t HizPass::autoThreads(const vk::DeviceInfo& device) { return kWidths.defaultFor(device); }
+
+HizAtlas HizPass::add(graph::RenderGraph& g, const FrameInputs& in, graph::ImageHandle depth, uint32_t threads) const {
     const glm::uvec2 padded = gpu::hizPaddedSize({in.extent.width, in.extent.height});
     const glm::uvec2 size = gpu::hizAtlasSize(padded);
     HizAtlas atlas{g.createImage("hiz.atlas", {size.x, size.y, kFormat, 1}), gpu::kHizLevels};
-    for (uint32_t level = 1; level < gpu::kHizLevels; ++level) {
-        gpu::HizBuildPush push{};
-        push.level = level;
-        push.dstOrigin = gpu::hizLevelOrigin(padded, level);
-        push.dstSize = gpu::hizLevelSize(padded, level);
-        if (level > 1) push.srcOrigin = gpu::hizLevelOrigin(padded, level - 1);
-        ComputePass pass(g, ctx_, "hiz.build." + std::to_string(level), pipeline_);
-        pass.uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize).sampled(depth, in.samplers->nearestClamp);
-        // Level 1 (from the depth buffer) starts the image; later levels read the one below and keep the rest.
-        if (level == 1) pass.storageWrite(atlas.image, &atlas.image);
-        else pass.storageReadWrite(atlas.image, &atlas.image);
-        pass.push(push).dispatch({push.dstSize.x, push.dstSize.y}, gpu::kHizGroupSize);
-    }
+    // One workgroup per coarsest cell of the padded screen (its invocations: the specialization constant).
+    ComputePass(g, ctx_, "hiz.build", pipelines_.get(threads))
+        .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
+        .sampled(depth, in.samplers->nearestClamp)
+        .storageWrite(atlas.image, &atlas.image)
+        .dispatch({padded.x, padded.y}, kCell);
     return atlas;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
-// Builds the depth hierarchy (hiz.h) from the G-buffer depth: one pass per level from 1 up,
-// "hiz.build.<L>", so the build is timed on its own (level 0 is the depth buffer itself).
+// Builds the depth hierarchy (hiz.h) from the G-buffer depth: levels 1.. in one pass, "hiz.build"
+// (level 0 is the depth buffer itself).
 #include "common/frame_inputs.hpp"
+#include "common/workgroup_widths.hpp"
 #include "graph/graph.hpp"
 
 namespace ppr::passes {
@@ -15,11 +16,13 @@ class HizPass {
 public:
     static constexpr VkFormat kFormat = VK_FORMAT_R32_SFLOAT;
     explicit HizPass(const vk::Context& ctx);
-    HizAtlas add(graph::RenderGraph& g, const FrameInputs& in, graph::ImageHandle depth) const;
+    // threads: invocations per coarsest cell (hiz_threads.hpp), 0 for the device's default.
+    HizAtlas add(graph::RenderGraph& g, const FrameInputs& in, graph::ImageHandle depth, uint32_t threads) const;
+    static uint32_t autoThreads(const vk::DeviceInfo& device);
 
 private:
     const vk::Context& ctx_;
-    shader::Pipeline pipeline_;
+    WidthPipelines pipelines_;
 };
 
 }  // namespace ppr::passes

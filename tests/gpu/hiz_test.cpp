@@ -1,9 +1,10 @@
 // ssr-hiz on the GPU: the depth hierarchy the frame builds is exactly the min-reduction of its depth
-// buffer (hiz/hiz.h layout: levels 1.. in the atlas, odd sizes included), and the hierarchical march finds the reflections
+// buffer (hiz/hiz.h layout: levels 1.. in the atlas, odd sizes included, every hiz_threads), and the hierarchical march finds the reflections
 // ssr-brute finds, with the same colours. Validation + synchronization validation on throughout.
 #include "common/reflection.h"
 #include "gpu_test_util.hpp"
 #include "hiz/hiz.h"
+#include "hiz/hiz_threads.hpp"
 #include "tonemap/tonemap.h"
 
 #include <algorithm>
@@ -63,14 +64,21 @@ void expectAtlasIsMinOfDepth(const app::DepthCapture& c, const std::string& what
 }
 
 // (Suite `hiz`, lower case like the unit tests' folder, so `ctest -R hiz` runs both.)
+// With every workgroup width hiz_threads offers (blocks of 16, 8 and 4 texels a side, so the walk
+// stops at each of levels 4, 3 and 2 and the shared reduction does the rest), on screens of whole
+// cells, of partial ones and of less than one.
 TEST(hiz, AtlasIsTheMinReductionOfTheDepthBuffer) {
     GpuFixture f;
     f.headless->setTechnique("ssr-hiz");
-    for (VkExtent2D size : {VkExtent2D{320, 180}, VkExtent2D{203, 117}})
-        for (const char* camera : {"overview", "puddles"}) {
-            const app::DepthCapture c = f.headless->captureDepth(f.camera(camera), size);
-            expectAtlasIsMinOfDepth(c, std::string(camera) + " " + std::to_string(size.width) + "x" + std::to_string(size.height));
-        }
+    for (uint32_t threads : passes::kHizThreadChoices) {
+        f.headless->settings().set("hiz_threads", std::to_string(threads));
+        for (VkExtent2D size : {VkExtent2D{320, 180}, VkExtent2D{203, 117}, VkExtent2D{61, 37}})
+            for (const char* camera : {"overview", "puddles"}) {
+                const app::DepthCapture c = f.headless->captureDepth(f.camera(camera), size);
+                expectAtlasIsMinOfDepth(c, std::string(camera) + " " + std::to_string(size.width) + "x" + std::to_string(size.height) +
+                                               " hiz_threads=" + std::to_string(threads));
+            }
+    }
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
 

@@ -80,6 +80,10 @@ TEST(Settings, DecodesIntoTypedFields) {
     s.apply("classify_threads=64");
     EXPECT_EQ(v.tiles.classifyThreads, 64u);
     EXPECT_EQ(s.get("classify_threads"), "64");
+    EXPECT_EQ(v.ssr.hizThreads, 0u);
+    s.apply("hiz_threads=256");
+    EXPECT_EQ(v.ssr.hizThreads, 256u);
+    EXPECT_EQ(s.get("hiz_threads"), "256");
 }
 
 TEST(Settings, FloatTextRoundTrips) {
@@ -112,6 +116,7 @@ TEST(Settings, RejectsBadValuesNamingKeyAndWhatIsAccepted) {
     expectRejected("exposure=1x", "expected a number");
     expectRejected("project_threads=48", "project_threads=48: expected one of auto|32|64|128|256");
     expectRejected("classify_threads=32", "classify_threads=32: expected one of auto|1|16|64");
+    expectRejected("hiz_threads=4", "hiz_threads=4: expected one of auto|16|64|256");
     expectRejected("novalue", "expected key=value");
     expectRejected("=1", "expected key=value");
 }
