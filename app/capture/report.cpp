@@ -32,7 +32,10 @@ nlohmann::json pprStatsJson(const CaptureResult& r, VkExtent2D size, size_t proj
             {"occluder_tile_pairs", s.occluderTilePairs},
             {"max_reflectors_per_tile", s.maxTileSurvivors},
             // Tiles whose survivors all share one plane and whose pixels looked them up in a grid.
-            {"tiles_plane_grid", s.tilesOnPlaneGrid}};
+            {"tiles_plane_grid", s.tilesOnPlaneGrid},
+            // The planar tiles holding a normal-mapped hole, which ppr.fallback.holes marches (listed
+            // by ppr.reflect with indirect=1).
+            {"tiles_mapped_holes", s.tilesWithMappedHoles}};
 }
 
 nlohmann::json makeReport(const vk::Context& ctx, const ReportInfo& info, const CaptureResult& r) {

@@ -162,7 +162,7 @@ const std::vector<SettingDecl>& settingDecls() {
                             "ssr_holes",
                             "PPR: reflective pixels no reflector rectangle covers (curved, rough) get ssr-hiz over the non-planar tiles, or "
                             "nothing; ssr_holes: also PPR's holes on normal-mapped reflectors (pixels nothing was projected to, where "
-                            "the mapped ray finds what the flat reflection cannot: ppr.fallback.holes over the planar tiles)"),
+                            "the mapped ray finds what the flat reflection cannot: ppr.fallback.holes over the planar tiles that hold one)"),
         choice<NormalMap>("normalmap", "ppr, ssr, raytraced", [](FrameSettings& s) -> NormalMap& { return s.ppr.normalMap; }, {"off", "approx", "raymarch"},
                           "raymarch",
                           "normal-mapped reflectors: off (flat mirrors); PPR: approx (reflect about the mapped normal at the flat "

@@ -111,19 +111,25 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
     // TAA's reflection history reprojects through the virtual point, which needs each pixel's path length.
     const bool taa = f.settings.taa.enabled && f.settings.view.debug == gpu::kDebugNone;
     if (taa) reflect.distance = f.graph.createImage("ppr.distance", {f.in.extent.width, f.in.extent.height, passes::kReflectedPathFormat, 1});
-    graph::ImageHandle distance;
-    graph::ImageHandle reflection = reflect_.add(f.graph, f.in, reflect, &distance);
     // The debug views PPR draws over the whole screen are left as they are.
     const uint32_t debug = reflect.debugView;
     const bool pprDebugView = debug == gpu::kDebugIntermediate || debug == gpu::kDebugHoles || debug == gpu::kDebugTiles;
+    // The holes the fallback marches are normal-mapped pixels (none with normalmap=off): the
+    // reflection pass lists their tiles for it.
+    const bool marchHoles = s.fallback == PprFallback::SsrHoles && s.normalMap != NormalMap::Off && !pprDebugView;
+    reflect.listMappedHoles = marchHoles;
+    reflect.stats = scatter.stats;
+    graph::ImageHandle distance;
+    std::optional<passes::TileLists> holeTiles;
+    graph::ImageHandle reflection = reflect_.add(f.graph, f.in, reflect, &distance, &holeTiles);
     if (s.fallback != PprFallback::None && !pprDebugView) {
         passes::SsrInputs fallback = ssrInputs(f, tiles);
         const passes::HizAtlas hiz = f.depthHierarchy();
         fallback.hiz = hiz.image;
         fallback.hizLevels = hiz.levels;
         // The fallback's pixels get their path lengths from their SSR hits.
-        const bool holes = s.fallback == PprFallback::SsrHoles;  // PPR's holes too
-        reflection = fallback_->addFallback(f.graph, f.in, fallback, reflection, "ppr.fallback", holes, taa ? &distance : nullptr);
+        reflection = fallback_->addFallback(f.graph, f.in, fallback, reflection, "ppr.fallback", marchHoles, taa ? &distance : nullptr,
+                                            holeTiles ? &*holeTiles : nullptr);
     }
     if (taa) f.board.put(ReflectionDistance{distance});
     return reflection;

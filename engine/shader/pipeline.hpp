@@ -118,7 +118,7 @@ public:
     void push(VkCommandBuffer cmd, const Pipeline& pipeline);
 
 private:
-    static constexpr uint32_t kMax = 16;
+    static constexpr uint32_t kMax = 32;  // VK_KHR_push_descriptor guarantees maxPushDescriptors >= 32
     PFN_vkCmdPushDescriptorSetKHR fn_;
     VkWriteDescriptorSet writes_[kMax]{};
     VkDescriptorImageInfo images_[kMax]{};

@@ -40,9 +40,10 @@ struct PprFrameStats {
     uint reflectorsReflecting;     // reflectors on screen showing their reflecting side (ppr.bounds's list)
     uint reflectorsOnScreen;       // reflectors on screen, either side (possible occluders)
     uint tilesOnPlaneGrid;         // tiles whose pixels found their reflector in a plane grid (ppr_common/plane_grid.h)
+    uint tilesWithMappedHoles;     // planar tiles ppr.fallback.holes marches (ppr.reflect's list; 0 without one)
 };
 PPR_END
-PPR_SIZE_CHECK(PprFrameStats, 60);
+PPR_SIZE_CHECK(PprFrameStats, 64);
 // kTileClassCount must match PprFrameStats::dispatch.
 
 PPR_BEGIN

@@ -30,6 +30,9 @@ layout(push_constant, scalar) uniform Push { PprReflectPush pc; };
 #define ENV_BINDING 11  // the probe's data and cube (11, 12)
 layout(set = 0, binding = 13, rg32f) uniform writeonly image2D outDistance;  // kPprWriteDistance: common/reflection.h
 layout(set = 0, binding = 14) uniform sampler2D materialTex;  // G-buffer: alpha = motion slot (kPprWriteDistance)
+// kPprListMappedHoles: the list's dispatch arguments and which slots of the planar list are listed; the list.
+layout(set = 0, binding = 15, scalar) buffer MappedHoles { TileDispatchArgs mappedHoleArgs; uint mappedHoleListed[]; };
+layout(set = 0, binding = 16, scalar) writeonly buffer MappedHoleTiles { uint mappedHoleTiles[]; };
 #include "gbuffer/motion_slot.glsl"
 
 // TAA's reflection history: the path eye → this pixel's surface → the reflected point seen at screen
@@ -40,6 +43,12 @@ void storeDistance(ivec2 pix, vec2 seen) {
     vec3 reflected = worldFromDepth((vec2(seenPix) + 0.5) * frame.invScreenSize, texelFetch(depthTex, seenPix, 0).r);
     imageStore(outDistance, pix, vec4(length(surface - frame.cameraPos.xyz) + length(reflected - surface),
                                       pathTag(motionSlotOf(texelFetch(materialTex, seenPix, 0)), 0u), 0.0, 0.0));
+}
+
+// kPprListMappedHoles (indirect only): this pixel is one ppr.fallback.holes will march; list its tile
+// once (the first pixel to flag the tile's slot appends it).
+void listMappedHole() {
+    if (atomicExchange(mappedHoleListed[gl_WorkGroupID.x], 1u) == 0u) mappedHoleTiles[atomicAdd(mappedHoleArgs.x, 1u)] = planarTiles[gl_WorkGroupID.x];
 }
 
 uint fetchValue(ivec2 p) {
@@ -289,8 +298,12 @@ void main() {
         imageStore(outReflection, pix, vec4(c, d.valid || onReflector ? 1.0 : 0.0));
         return;
     }
+    bool listHoles = (pc.flags & kPprListMappedHoles) != 0u;
     if (!onReflector) {
         imageStore(outReflection, pix, vec4(0.0, 0.0, 0.0, kReflectionNone));
+        // A reflector beyond PPR's budget is a hole to the fallback as well.
+        if (listHoles && id != 0u && dot(normalize(texelFetch(normalTex, pix, 0).xyz), reflectors[id - 1u].normal) < kPprMappedHoleListCos)
+            listMappedHole();
         return;
     }
 
@@ -326,12 +339,15 @@ void main() {
         return;
     }
     vec3 n = flatNormal;
+    float mappedCos = 1.0;
     if ((pc.flags & normalModes) != 0u) {
         vec3 mapped = normalize(texelFetch(normalTex, pix, 0).xyz);
-        if (dot(mapped, flatNormal) < kFlatNormalCos) n = mapped;
+        mappedCos = dot(mapped, flatNormal);
+        if (mappedCos < kFlatNormalCos) n = mapped;
     }
     vec3 dir = reflect(normalize(surface - frame.cameraPos.xyz), n);
     if (!r.valid) {  // nothing projected here: the environment, or no reflection
+        if (listHoles && mappedCos < kPprMappedHoleListCos) listMappedHole();
         bool env = (pc.flags & kPprEnvironment) != 0u;
         imageStore(outReflection, pix, env ? vec4(environmentRadiance(surface, dir), kReflectionEnvironment) : vec4(0.0, 0.0, 0.0, kReflectionNone));
         return;

@@ -9,7 +9,45 @@
 #include "ppr_reflect/ppr_reflect.h"
 #include "ppr_reflect_comp.h"
 
+#include <cstddef>
+
 namespace ppr::passes {
+
+namespace {
+// The list empty (dispatch arguments x = 0, y = z = 1) and no planar-list slot listed yet; transfer
+// commands on disjoint ranges, so no barrier between them.
+graph::BufferHandle addMappedHolesClear(graph::RenderGraph& g, graph::BufferHandle state) {
+    struct Clear {
+        graph::BufferHandle state;
+    };
+    return g
+        .addPass<Clear>(
+            "ppr.holes.clear", graph::QueueKind::Transfer, [&](graph::PassBuilder& b, Clear& d) { d.state = b.transferDst(state); },
+            [](const Clear& d, graph::PassContext& pc) {
+                const gpu::TileDispatchArgs empty{0u, 1u, 1u};
+                vkCmdUpdateBuffer(pc.cmd(), pc.buffer(d.state), 0, sizeof(empty), &empty);
+                vkCmdFillBuffer(pc.cmd(), pc.buffer(d.state), sizeof(empty), VK_WHOLE_SIZE, 0u);
+            })
+        .state;
+}
+
+// The list's length into the host-visible stats (report.json's tiles_mapped_holes).
+void addMappedHolesCount(graph::RenderGraph& g, graph::BufferHandle state, graph::BufferHandle stats) {
+    struct Count {
+        graph::BufferHandle state, stats;
+    };
+    g.addPass<Count>(
+        "ppr.holes.count", graph::QueueKind::Transfer,
+        [&](graph::PassBuilder& b, Count& d) {
+            d.state = b.transferSrc(state);
+            d.stats = b.transferDst(stats);
+        },
+        [](const Count& d, graph::PassContext& pc) {
+            const VkBufferCopy region{offsetof(gpu::TileDispatchArgs, x), offsetof(gpu::PprFrameStats, tilesWithMappedHoles), sizeof(uint32_t)};
+            vkCmdCopyBuffer(pc.cmd(), pc.buffer(d.state), pc.buffer(d.stats), 1, &region);
+        });
+}
+}  // namespace
 
 PprReflectPass::PprReflectPass(const vk::Context& ctx) : ctx_(ctx) {
     shader::PipelineLayoutDesc layout;
@@ -18,7 +56,7 @@ PprReflectPass::PprReflectPass(const vk::Context& ctx) : ctx_(ctx) {
 }
 
 graph::ImageHandle PprReflectPass::add(graph::RenderGraph& g, const FrameInputs& in, const PprReflectInputs& inputs,
-                                       graph::ImageHandle* distanceOut) const {
+                                       graph::ImageHandle* distanceOut, std::optional<TileLists>* mappedHolesOut) const {
     gpu::PprReflectPush push{};
     push.flags = inputs.flags;
     push.debugView = inputs.debugView;
@@ -58,10 +96,27 @@ graph::ImageHandle PprReflectPass::add(graph::RenderGraph& g, const FrameInputs&
     if (writeDistance) pass.storageReadWrite(addClearPass(g, in, "ppr.distance.clear", *inputs.distance, VkClearColorValue{}), &distanceWritten);
     else pass.storageWrite(g.createImage("ppr.distance.unused", {1, 1, kReflectedPathFormat, 1}), &distanceWritten);
     pass.sampled(inputs.material, in.samplers->nearestClamp);  // binding 14
+    // Bindings 15, 16: the mapped holes' tile list (its dispatch arguments and listed slots; the tiles),
+    // or 16-byte stand-ins the shader never touches.
+    const bool listHoles = indirect && inputs.listMappedHoles && mappedHolesOut;
+    TileLists holes;
+    if (listHoles) {
+        push.flags |= gpu::kPprListMappedHoles;
+        holes = *inputs.tiles;
+        const graph::BufferHandle state =
+            addMappedHolesClear(g, g.createBuffer("ppr.holes.state", {sizeof(gpu::TileDispatchArgs) + sizeof(uint32_t) * holes.tileCount()}));
+        pass.storageReadWrite(state, &holes.args).storageWrite(g.createBuffer("ppr.holes.tiles", {sizeof(uint32_t) * holes.tileCount()}), &holes.lists);
+    } else {
+        pass.storageWrite(g.createBuffer("ppr.holes.state.unused", {16}), nullptr).storageWrite(g.createBuffer("ppr.holes.tiles.unused", {16}), nullptr);
+    }
     pass.push(push);
     if (indirect) pass.dispatchIndirect(inputs.tiles->args, sizeof(gpu::TileDispatchArgs) * gpu::kTileClassPlanar);
     else pass.dispatch(in.extent, gpu::kPprTileSize);
     if (distanceOut) *distanceOut = distanceWritten;  // set by dispatch
+    if (listHoles) {
+        *mappedHolesOut = holes;  // args and lists set by dispatch
+        addMappedHolesCount(g, holes.args, inputs.stats);
+    }
     return out;
 }
 

@@ -26,6 +26,10 @@ struct PprReflectInputs {
     // add()) that receives each reflector pixel's path length and motion slot; add() returns it
     // written in `distanceOut`.
     std::optional<graph::ImageHandle> distance;
+    // With kPprIndirect: list the planar tiles holding a pixel ppr.fallback.holes will march
+    // (kPprListMappedHoles); add() returns the list in `mappedHolesOut`.
+    bool listMappedHoles = false;
+    graph::BufferHandle stats;  // PprFrameStats (with the list: tilesWithMappedHoles copied in)
 };
 
 class PprReflectPass {
@@ -33,8 +37,10 @@ public:
     static constexpr VkFormat kReflectionFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
     explicit PprReflectPass(const vk::Context& ctx);
     // Whole-screen debug views ignore kPprIndirect.
+    // mappedHolesOut (with listMappedHoles and an indirect dispatch): the tiles as a one-class
+    // TileLists (arguments and list at class 0), for SsrTracePass::addFallback; untouched otherwise.
     graph::ImageHandle add(graph::RenderGraph& g, const FrameInputs& in, const PprReflectInputs& inputs,
-                           graph::ImageHandle* distanceOut = nullptr) const;
+                           graph::ImageHandle* distanceOut = nullptr, std::optional<TileLists>* mappedHolesOut = nullptr) const;
 
 private:
     const vk::Context& ctx_;

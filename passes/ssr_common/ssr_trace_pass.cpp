@@ -80,10 +80,16 @@ graph::ImageHandle SsrTracePass::addTechnique(graph::RenderGraph& g, const Frame
 
 graph::ImageHandle SsrTracePass::addFallback(graph::RenderGraph& g, const FrameInputs& in, const SsrInputs& inputs,
                                              graph::ImageHandle reflection, const std::string& passName, bool holes,
-                                             graph::ImageHandle* distance) const {
+                                             graph::ImageHandle* distance, const TileLists* holeTiles) const {
     const std::optional<uint32_t> list = inputs.indirect ? std::optional<uint32_t>(gpu::kTileClassOther) : std::nullopt;
     reflection = trace(g, in, inputs, reflection, passName, 1u << gpu::kTileClassOther, list, false, distance);
     if (!holes) return reflection;
+    if (holeTiles) {
+        SsrInputs listed = inputs;
+        listed.tiles = holeTiles;
+        return trace(g, in, listed, reflection, passName + ".holes", 1u << gpu::kTileClassPlanar, 0u, false, distance,
+                     gpu::kSsrHolesOnly);
+    }
     const std::optional<uint32_t> planar = inputs.indirect ? std::optional<uint32_t>(gpu::kTileClassPlanar) : std::nullopt;
     return trace(g, in, inputs, reflection, passName + ".holes", 1u << gpu::kTileClassPlanar, planar, false, distance, gpu::kSsrHolesOnly);
 }

@@ -49,10 +49,12 @@ public:
     // Shades only reflective pixels that no reflector rectangle covers into `reflection` (read-write),
     // in a pass named `passName`: over the non-planar tile list, or the whole screen. `holes`: then
     // also the reflector pixels `reflection` holds no reflection for, in "<passName>.holes" (over the
-    // planar list). `distance`, when given, is the caller's path-length image: those pixels' lengths
-    // are written into it (in/out).
+    // planar list, or over `holeTiles` when given: PprReflectPass's list of the planar tiles that hold
+    // such a pixel, at class 0). `distance`, when given, is the caller's path-length image: those
+    // pixels' lengths are written into it (in/out).
     graph::ImageHandle addFallback(graph::RenderGraph& g, const FrameInputs& in, const SsrInputs& inputs, graph::ImageHandle reflection,
-                                   const std::string& passName, bool holes, graph::ImageHandle* distance = nullptr) const;
+                                   const std::string& passName, bool holes, graph::ImageHandle* distance = nullptr,
+                                   const TileLists* holeTiles = nullptr) const;
 
 private:
     // `distance`: the path-length image to write (updated to the pass's version), or none.

@@ -2,6 +2,7 @@
 // change nothing on flat reflectors, change the normal-mapped ones, and the environment fills
 // exactly the pixels that had no reflection. Validation + synchronization validation on.
 #include "common/reflection.h"
+#include "ppr_common/tiles.h"
 #include "gpu_test_util.hpp"
 #include "metrics/compare_metrics.hpp"
 
@@ -190,6 +191,44 @@ TEST(NormalMaps, HoleFallbackMarchesOnlyPprsHoles) {
     EXPECT_GE(filled * 10, holes * 9) << "the march finds nearly every hole's reflection";
     EXPECT_GT(after.coverage, before.coverage);
     EXPECT_GT(after.psnrDb, before.psnrDb + 3.0);
+    EXPECT_EQ(f.ctx->validationErrors(), 0u);
+}
+
+// indirect=1 (the default): ppr.reflect lists the planar tiles that hold a pixel the fallback will
+// march (a normal-mapped hole), and ppr.fallback.holes runs on those alone. The reflection is the
+// whole-screen march's (indirect=0) bit for bit, with and without the environment; the list is
+// shorter than the planar list where some reflectors are flat, empty without normal-mapped
+// reflectors, and with normalmap=off there is no holes pass at all.
+TEST(NormalMaps, HoleMarchRunsOnlyOnTheTilesThatHoldHoles) {
+    GpuFixture f;
+    f.headless->setTechnique("ppr");
+    auto capture = [&](const char* camera, const char* indirect, const char* env, const char* normalMap) {
+        f.headless->settings().set("indirect", indirect);
+        f.headless->settings().set("fallback_env", env);
+        f.headless->settings().set("normalmap", normalMap);
+        return f.headless->capture(f.camera(camera), kSize, 1, false, true);
+    };
+    for (const char* camera : {"normalmap", "overview"})
+        for (const char* env : {"0", "1"}) {
+            const app::CaptureResult listed = capture(camera, "1", env, "raymarch");
+            const app::CaptureResult whole = capture(camera, "0", env, "raymarch");
+            EXPECT_EQ(differingPixels(listed.reflection, whole.reflection), 0u) << camera << " fallback_env=" << env;
+            ASSERT_TRUE(listed.pprStats.has_value());
+            const gpu::PprFrameStats& s = *listed.pprStats;
+            // The march changes something (against fallback=ssr: holes left as PPR left them) where listed.
+            f.headless->settings().set("fallback", "ssr");
+            const size_t marched = differingPixels(capture(camera, "1", env, "raymarch").reflection, listed.reflection);
+            f.headless->settings().set("fallback", "ssr_holes");
+            std::printf("%s fallback_env=%s: %u of %u planar tiles listed, %zu pixels changed by the march\n", camera, env,
+                        s.tilesWithMappedHoles, s.dispatch[gpu::kTileClassPlanar].x, marched);
+            EXPECT_LT(s.tilesWithMappedHoles, s.dispatch[gpu::kTileClassPlanar].x) << camera;
+            if (std::string(camera) == "normalmap") EXPECT_GT(marched, 20u) << "the view shows PPR's holes";
+            EXPECT_EQ(listed.passMedianMs.count("ppr.fallback.holes"), 1u);
+        }
+    EXPECT_EQ(capture("stairs", "1", "0", "raymarch").pprStats->tilesWithMappedHoles, 0u) << "no normal maps there";
+    const app::CaptureResult off = capture("normalmap", "1", "0", "off");
+    EXPECT_EQ(off.pprStats->tilesWithMappedHoles, 0u);
+    EXPECT_EQ(off.passMedianMs.count("ppr.fallback.holes"), 0u) << "normalmap=off: no hole to march";
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
 
