@@ -220,6 +220,14 @@ PPR_INLINE bool pprTileMayReachReflector(ReflectorData r, PprReflectorBounds b, 
     if (r.cullPlane == kPprNoCullPlane) return pprRectsOverlap(b.rect, b.rect);
     return pprRectsOverlap(mirrored, b.rect) && pprRectangleMeetsBox(r, hitLo, hitHi);
 }
+// Its screen-rectangle half: false rules the reflector out; true leaves the verdict to
+// pprRectangleMeetsBox on the hit region for a reflector in a cull plane (a reflector beyond the
+// tables is then kept). For a caller that builds the hit region only when this passes.
+PPR_INLINE bool pprTileMayReachReflectorOnScreen(ReflectorData r, PprReflectorBounds b, uvec2 mirrored) {
+    if (b.reflects == 0u) return false;
+    if (r.cullPlane == kPprNoCullPlane) return pprRectsOverlap(b.rect, b.rect);
+    return pprRectsOverlap(mirrored, b.rect);
+}
 PPR_END
 PPR_SIZE_CHECK(PprReflectorBounds, 16);
 

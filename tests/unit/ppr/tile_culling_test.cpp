@@ -542,6 +542,35 @@ TEST(PprTileCulling, VerdictDropsBackFacingAndJudgesUntabledOnTheirRectangle) {
     EXPECT_FALSE(ppr::gpu::pprTileMayReachReflector(r, b, onScreen, everywhereLo, everywhereHi));
 }
 
+// The reach pass builds the hit region only when the verdict's screen-rectangle half passes: the two
+// halves must make exactly the verdict, in every combination of its cases.
+TEST(PprTileCulling, VerdictIsItsOnScreenHalfThenTheHitRegion) {
+    const uvec2 onScreen{10u | (20u << 16u), 30u | (40u << 16u)}, elsewhere{100u | (200u << 16u), 130u | (240u << 16u)};
+    const uvec2 empty{ppr::gpu::kPprEmptyRectLo, ppr::gpu::kPprEmptyRectHi};
+    const vec3 hitRegions[2][2] = {{vec3(-1e30f), vec3(1e30f)}, {vec3(1e29f), vec3(1e30f)}};  // meets the rectangle, misses it
+    int cases = 0, kept = 0;
+    for (uint32_t reflects : {0u, 1u})
+        for (uint32_t plane : {0u, ppr::gpu::kPprNoCullPlane})
+            for (uvec2 own : {onScreen, elsewhere, empty})
+                for (uvec2 mirrored : {onScreen, elsewhere, empty})
+                    for (const auto& hit : hitRegions) {
+                        ReflectorData r{};
+                        r.cullPlane = plane;
+                        ppr::gpu::PprReflectorBounds b{};
+                        b.rect = own;
+                        b.reflects = reflects;
+                        const bool verdict = ppr::gpu::pprTileMayReachReflector(r, b, mirrored, hit[0], hit[1]);
+                        const bool halves = ppr::gpu::pprTileMayReachReflectorOnScreen(r, b, mirrored) &&
+                                            (plane == ppr::gpu::kPprNoCullPlane || ppr::gpu::pprRectangleMeetsBox(r, hit[0], hit[1]));
+                        EXPECT_EQ(verdict, halves) << "reflects " << reflects << " plane " << plane << " case " << cases;
+                        ++cases;
+                        kept += verdict;
+                    }
+    EXPECT_EQ(cases, 72);
+    EXPECT_GT(kept, 0);
+    EXPECT_LT(kept, cases);
+}
+
 TEST(PprTileCulling, RectPackingEdgeCases) {
     using namespace ppr::gpu;
     const vec2 screens[] = {{1280, 720}, {333, 177}, {1, 1}, {4096, 2160}};
