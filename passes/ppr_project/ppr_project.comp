@@ -395,8 +395,13 @@ void main() {
         survivorPlaneLo = kPprNoCullPlane;
         survivorPlaneHi = 0u;
     }
-    if (pc.cullTiles != 0u)
-        for (uint w = lid; w < kPprMaxReflectors / 2u; w += kThreads) survivorWords[w] = occluderWords[w] = 0u;
+    if (pc.cullTiles != 0u) {
+        // Only the words the lists can reach (their entries are or-ed into zeros): one entry at most
+        // per reflector of the bounds pass's lists, survivors from the reflecting one, occluders from
+        // the on-screen one. (Clearing all 2 × 512 words per tile cost 3 % of this pass on lavapipe.)
+        for (uint w = lid; w < (visibleCounts.reflecting + 1u) / 2u; w += kThreads) survivorWords[w] = 0u;
+        for (uint w = lid; w < (visibleCounts.onScreen + 1u) / 2u; w += kThreads) occluderWords[w] = 0u;
+    }
 
     // Every pixel's world position, once, for the bounds (unless listed) and the projection.
     vec4 points[kPixelsPerThread];  // xyz: world position; w: 1 with geometry, 0 for sky or off screen

@@ -115,7 +115,7 @@ graph::ImageHandle PprReflectPass::add(graph::RenderGraph& g, const FrameInputs&
     if (distanceOut) *distanceOut = distanceWritten;  // set by dispatch
     if (listHoles) {
         *mappedHolesOut = holes;  // args and lists set by dispatch
-        addMappedHolesCount(g, holes.args, inputs.stats);
+        if (inputs.stats.valid()) addMappedHolesCount(g, holes.args, inputs.stats);
     }
     return out;
 }
