@@ -215,18 +215,17 @@ PPR_INLINE bool pprRectangleMeetsBox(ReflectorData r, vec3 lo, vec3 hi) {
 // plane (pprTileHitRegion) meets the rectangle. A reflector beyond the plane tables
 // (kPprNoCullPlane; `mirrored` and the hit region are then not read) is kept wherever its own
 // rectangle is on screen.
-PPR_INLINE bool pprTileMayReachReflector(ReflectorData r, PprReflectorBounds b, uvec2 mirrored, vec3 hitLo, vec3 hitHi) {
-    if (b.reflects == 0u) return false;
-    if (r.cullPlane == kPprNoCullPlane) return pprRectsOverlap(b.rect, b.rect);
-    return pprRectsOverlap(mirrored, b.rect) && pprRectangleMeetsBox(r, hitLo, hitHi);
-}
-// Its screen-rectangle half: false rules the reflector out; true leaves the verdict to
-// pprRectangleMeetsBox on the hit region for a reflector in a cull plane (a reflector beyond the
-// tables is then kept). For a caller that builds the hit region only when this passes.
+// In two halves, for a caller that builds the hit region only when the first passes (the reach
+// pass): the screen-rectangle half rules the reflector out (false) or leaves the verdict to
+// pprRectangleMeetsBox on the hit region for a reflector in a cull plane (one beyond the tables is
+// then kept).
 PPR_INLINE bool pprTileMayReachReflectorOnScreen(ReflectorData r, PprReflectorBounds b, uvec2 mirrored) {
     if (b.reflects == 0u) return false;
     if (r.cullPlane == kPprNoCullPlane) return pprRectsOverlap(b.rect, b.rect);
     return pprRectsOverlap(mirrored, b.rect);
+}
+PPR_INLINE bool pprTileMayReachReflector(ReflectorData r, PprReflectorBounds b, uvec2 mirrored, vec3 hitLo, vec3 hitHi) {
+    return pprTileMayReachReflectorOnScreen(r, b, mirrored) && (r.cullPlane == kPprNoCullPlane || pprRectangleMeetsBox(r, hitLo, hitHi));
 }
 PPR_END
 PPR_SIZE_CHECK(PprReflectorBounds, 16);

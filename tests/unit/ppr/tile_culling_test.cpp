@@ -542,9 +542,11 @@ TEST(PprTileCulling, VerdictDropsBackFacingAndJudgesUntabledOnTheirRectangle) {
     EXPECT_FALSE(ppr::gpu::pprTileMayReachReflector(r, b, onScreen, everywhereLo, everywhereHi));
 }
 
-// The reach pass builds the hit region only when the verdict's screen-rectangle half passes: the two
-// halves must make exactly the verdict, in every combination of its cases.
-TEST(PprTileCulling, VerdictIsItsOnScreenHalfThenTheHitRegion) {
+// The verdict in every combination of its cases, against its definition written out here; and its
+// screen-rectangle half, which the reach pass evaluates first to build the hit region only when
+// needed: it never rules out a kept reflector, and once it passes, a tabled reflector's verdict is
+// the hit-region test alone.
+TEST(PprTileCulling, VerdictAndItsOnScreenHalfInEveryCase) {
     const uvec2 onScreen{10u | (20u << 16u), 30u | (40u << 16u)}, elsewhere{100u | (200u << 16u), 130u | (240u << 16u)};
     const uvec2 empty{ppr::gpu::kPprEmptyRectLo, ppr::gpu::kPprEmptyRectHi};
     const vec3 hitRegions[2][2] = {{vec3(-1e30f), vec3(1e30f)}, {vec3(1e29f), vec3(1e30f)}};  // meets the rectangle, misses it
@@ -553,22 +555,25 @@ TEST(PprTileCulling, VerdictIsItsOnScreenHalfThenTheHitRegion) {
         for (uint32_t plane : {0u, ppr::gpu::kPprNoCullPlane})
             for (uvec2 own : {onScreen, elsewhere, empty})
                 for (uvec2 mirrored : {onScreen, elsewhere, empty})
-                    for (const auto& hit : hitRegions) {
+                    for (int h = 0; h < 2; ++h) {
                         ReflectorData r{};
                         r.cullPlane = plane;
                         ppr::gpu::PprReflectorBounds b{};
                         b.rect = own;
                         b.reflects = reflects;
-                        const bool verdict = ppr::gpu::pprTileMayReachReflector(r, b, mirrored, hit[0], hit[1]);
-                        const bool halves = ppr::gpu::pprTileMayReachReflectorOnScreen(r, b, mirrored) &&
-                                            (plane == ppr::gpu::kPprNoCullPlane || ppr::gpu::pprRectangleMeetsBox(r, hit[0], hit[1]));
-                        EXPECT_EQ(verdict, halves) << "reflects " << reflects << " plane " << plane << " case " << cases;
+                        const bool tabled = plane != ppr::gpu::kPprNoCullPlane, meets = h == 0, ownOnScreen = own != empty;
+                        const bool overlap = own != empty && own == mirrored;  // the three rectangles are disjoint or equal
+                        const bool expected = reflects != 0u && (tabled ? overlap && meets : ownOnScreen);
+                        const bool verdict = ppr::gpu::pprTileMayReachReflector(r, b, mirrored, hitRegions[h][0], hitRegions[h][1]);
+                        const bool half = ppr::gpu::pprTileMayReachReflectorOnScreen(r, b, mirrored);
+                        EXPECT_EQ(verdict, expected) << "case " << cases;
+                        if (verdict) EXPECT_TRUE(half) << "case " << cases;
+                        if (half && tabled) EXPECT_EQ(verdict, meets) << "case " << cases;
                         ++cases;
                         kept += verdict;
                     }
     EXPECT_EQ(cases, 72);
-    EXPECT_GT(kept, 0);
-    EXPECT_LT(kept, cases);
+    EXPECT_EQ(kept, 2 + 12);  // tabled: mirrored on its own on-screen rectangle, hit region meeting it (2); untabled: own on screen, whatever the rest (2 × 3 × 2)
 }
 
 TEST(PprTileCulling, RectPackingEdgeCases) {
