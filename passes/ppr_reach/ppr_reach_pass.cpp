@@ -1,6 +1,7 @@
 #include "ppr_reach/ppr_reach_pass.hpp"
 
 #include "common/compute_pass.hpp"
+#include "common/dispatch_args.hpp"
 #include "common/tile_group_grid.hpp"
 #include "ppr_common/tiles.h"
 #include "ppr_reach/ppr_reach.h"
@@ -28,18 +29,7 @@ uint32_t PprReachPass::autoThreads(const vk::DeviceInfo& device) { return kWidth
 
 PprTileList PprReachPass::add(graph::RenderGraph& g, const FrameInputs& in, const ReflectorBinding& r, const PprReachInputs& inputs) const {
     const uint32_t tileCount = inputs.tilesX * inputs.tilesY;
-    // An empty list (x = 0, y = z = 1); vkCmdUpdateBuffer is a transfer command.
-    struct Clear {
-        graph::BufferHandle args;
-    };
-    const graph::BufferHandle args = g.createBuffer("ppr.reach.args", {sizeof(gpu::TileDispatchArgs)});
-    const Clear& cleared = g.addPass<Clear>(
-        "ppr.reach.clear", graph::QueueKind::Transfer,
-        [&](graph::PassBuilder& b, Clear& d) { d.args = b.transferDst(args); },
-        [](const Clear& d, graph::PassContext& pc) {
-            const gpu::TileDispatchArgs empty{0u, 1u, 1u};
-            vkCmdUpdateBuffer(pc.cmd(), pc.buffer(d.args), 0, sizeof(empty), &empty);
-        });
+    const graph::BufferHandle clearedArgs = addEmptyDispatchList(g, "ppr.reach.clear", g.createBuffer("ppr.reach.args", {sizeof(gpu::TileDispatchArgs)}));
 
     gpu::PprReachPush push{};
     push.reflectorCount = r.count;
@@ -54,7 +44,7 @@ PprTileList PprReachPass::add(graph::RenderGraph& g, const FrameInputs& in, cons
         .hostStorage(r.reflectors)
         .storageRead(inputs.bounds)
         .hostStorage(r.planeLeaders)
-        .storageReadWrite(cleared.args, &out.args)
+        .storageReadWrite(clearedArgs, &out.args)
         .storageWrite(g.createBuffer("ppr.reach.tiles", {sizeof(gpu::PprReachedTile) * tileCount}), &out.tiles)
         .storageWrite(g.createBuffer("ppr.tile_survivors", {sizeof(uint32_t) * tileCount}), &out.tileSurvivors)
         .storageReadWrite(inputs.stats, &out.stats)

@@ -3,6 +3,7 @@
 #include "common/clear_pass.hpp"
 #include "common/reflected_path.hpp"
 #include "common/compute_pass.hpp"
+#include "common/dispatch_args.hpp"
 #include "common/frame.h"
 #include "env_probe/env_probe.h"
 #include "ppr_common/tiles.h"
@@ -12,42 +13,6 @@
 #include <cstddef>
 
 namespace ppr::passes {
-
-namespace {
-// The list empty (dispatch arguments x = 0, y = z = 1) and no planar-list slot listed yet; transfer
-// commands on disjoint ranges, so no barrier between them.
-graph::BufferHandle addMappedHolesClear(graph::RenderGraph& g, graph::BufferHandle state) {
-    struct Clear {
-        graph::BufferHandle state;
-    };
-    return g
-        .addPass<Clear>(
-            "ppr.holes.clear", graph::QueueKind::Transfer, [&](graph::PassBuilder& b, Clear& d) { d.state = b.transferDst(state); },
-            [](const Clear& d, graph::PassContext& pc) {
-                const gpu::TileDispatchArgs empty{0u, 1u, 1u};
-                vkCmdUpdateBuffer(pc.cmd(), pc.buffer(d.state), 0, sizeof(empty), &empty);
-                vkCmdFillBuffer(pc.cmd(), pc.buffer(d.state), sizeof(empty), VK_WHOLE_SIZE, 0u);
-            })
-        .state;
-}
-
-// The list's length into the host-visible stats (report.json's tiles_mapped_holes).
-void addMappedHolesCount(graph::RenderGraph& g, graph::BufferHandle state, graph::BufferHandle stats) {
-    struct Count {
-        graph::BufferHandle state, stats;
-    };
-    g.addPass<Count>(
-        "ppr.holes.count", graph::QueueKind::Transfer,
-        [&](graph::PassBuilder& b, Count& d) {
-            d.state = b.transferSrc(state);
-            d.stats = b.transferDst(stats);
-        },
-        [](const Count& d, graph::PassContext& pc) {
-            const VkBufferCopy region{offsetof(gpu::TileDispatchArgs, x), offsetof(gpu::PprFrameStats, tilesWithMappedHoles), sizeof(uint32_t)};
-            vkCmdCopyBuffer(pc.cmd(), pc.buffer(d.state), pc.buffer(d.stats), 1, &region);
-        });
-}
-}  // namespace
 
 PprReflectPass::PprReflectPass(const vk::Context& ctx) : ctx_(ctx) {
     shader::PipelineLayoutDesc layout;
@@ -103,8 +68,9 @@ graph::ImageHandle PprReflectPass::add(graph::RenderGraph& g, const FrameInputs&
     if (listHoles) {
         push.flags |= gpu::kPprListMappedHoles;
         holes = *inputs.tiles;
-        const graph::BufferHandle state =
-            addMappedHolesClear(g, g.createBuffer("ppr.holes.state", {sizeof(gpu::TileDispatchArgs) + sizeof(uint32_t) * holes.tileCount()}));
+        // The list empty and no planar-list slot listed yet.
+        const graph::BufferHandle state = addEmptyDispatchList(
+            g, "ppr.holes.clear", g.createBuffer("ppr.holes.state", {sizeof(gpu::TileDispatchArgs) + sizeof(uint32_t) * holes.tileCount()}), true);
         pass.storageReadWrite(state, &holes.args).storageWrite(g.createBuffer("ppr.holes.tiles", {sizeof(uint32_t) * holes.tileCount()}), &holes.lists);
     } else {
         pass.storageWrite(g.createBuffer("ppr.holes.state.unused", {16}), nullptr).storageWrite(g.createBuffer("ppr.holes.tiles.unused", {16}), nullptr);
@@ -115,7 +81,10 @@ graph::ImageHandle PprReflectPass::add(graph::RenderGraph& g, const FrameInputs&
     if (distanceOut) *distanceOut = distanceWritten;  // set by dispatch
     if (listHoles) {
         *mappedHolesOut = holes;  // args and lists set by dispatch
-        if (inputs.stats.valid()) addMappedHolesCount(g, holes.args, inputs.stats);
+        // The list's length into the host-visible stats (report.json's tiles_mapped_holes).
+        if (inputs.stats.valid())
+            addCountCopy(g, "ppr.holes.count", holes.args, offsetof(gpu::TileDispatchArgs, x), inputs.stats,
+                         offsetof(gpu::PprFrameStats, tilesWithMappedHoles), sizeof(uint32_t));
     }
     return out;
 }

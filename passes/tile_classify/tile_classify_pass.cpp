@@ -1,6 +1,7 @@
 #include "tile_classify/tile_classify_pass.hpp"
 
 #include "common/compute_pass.hpp"
+#include "common/dispatch_args.hpp"
 #include "common/tile_group_grid.hpp"
 #include "ppr_common/tiles.h"
 #include "tile_classify/tile_classify.h"
@@ -71,20 +72,7 @@ TileLists TileClassifyPass::add(graph::RenderGraph& g, const FrameInputs& in, co
                   gpu::kTileClassifyGroupSize);
 
     // The arguments as the dispatches will read them, into the host-visible stats.
-    struct Count {
-        graph::BufferHandle args, stats;
-    };
-    const Count& counted = g.addPass<Count>(
-        "tiles.count", graph::QueueKind::Transfer,
-        [&](graph::PassBuilder& b, Count& d) {
-            d.args = b.transferSrc(t.args);
-            d.stats = b.transferDst(clearedStats);
-        },
-        [](const Count& d, graph::PassContext& pc) {
-            const VkBufferCopy region{0, offsetof(gpu::PprFrameStats, dispatch), sizeof(gpu::PprFrameStats::dispatch)};
-            vkCmdCopyBuffer(pc.cmd(), pc.buffer(d.args), pc.buffer(d.stats), 1, &region);
-        });
-    t.stats = counted.stats;
+    t.stats = addCountCopy(g, "tiles.count", t.args, 0, clearedStats, offsetof(gpu::PprFrameStats, dispatch), sizeof(gpu::PprFrameStats::dispatch));
     return t;
 }
 
