@@ -299,44 +299,6 @@ void writeChosen(ivec2 pix, vec3 p, vec3 surfaceNormal, vec3 eye, uint best, vec
 // A glass reflector without an atlas region this frame takes no pixels.
 bool skipped(ReflectorData r, uint i) { return r.kind == kReflectorGlass && (pc.glass == 0u || glassRegions[i].valid == 0u); }
 
-// projectTile's choice for one pixel where every candidate lies in the grid's plane (one
-// orientation), made among the candidates of the cells around the pixel's hit in the plane
-// leader's plane. Each
-// candidate's own plane may lie up to kPprCullPlaneTolerance from the leader's, which moves its hit
-// by at most that times (1 / the cosine of the ray with the normal, plus 2): the cells within that
-// margin hold every candidate whose rectangle can hold its own hit (ppr_common/plane_grid.h).
-void projectPixelOnGrid(ivec2 pix, vec3 p, vec3 eye, vec3 surfaceNormal, float above, uint candidates, uint occluders) {
-    float height = dot(p - gridLeaderCenter, gridLeaderNormal), eyeHeight = dot(eye - gridLeaderCenter, gridLeaderNormal);
-    float span = height + eyeHeight;  // the same for every candidate, up to rounding
-    if (!(span > 0.5 * kPprAboveEpsilon)) return;  // no candidate has the pixel above it and the eye in front
-    vec3 mirrored = p - 2.0 * height * gridLeaderNormal;
-    vec3 hit = mix(eye, mirrored, eyeHeight / span);
-    float margin = pprPlaneGridLookupMargin(p, eye, gridLeaderCenter, mirrored, span);
-    uvec4 cells = pprPlaneGridCellsAround(grid, hit, margin);
-    uint best = 0xFFFFFFFFu;
-    float bestDistance = 3.4e38;
-    vec3 bestMirrored = vec3(0.0), bestHit = vec3(0.0);
-    float bestFacing = 2.0;
-    for (uint w = 0u; w * 32u < candidates; ++w) {
-        uint bits = 0u;
-        for (uint y = cells.y; y <= cells.w; ++y)
-            for (uint x = cells.x; x <= cells.z; ++x) bits |= gridWords[(x + y * kPprPlaneGridSize) * kPprPlaneGridWords + w];
-        for (; bits != 0u; bits &= bits - 1u) {  // in projection order, as projectTile's loop
-            uint i = survivorAt(w * 32u + uint(findLSB(bits)));
-            ReflectorData r = reflectors[i];
-            float d, f;
-            vec3 m, h;
-            if (skipped(r, i) || !takes(r, p, eye, surfaceNormal, above, bestDistance, d, m, h, f)) continue;
-            best = i;
-            bestFacing = f;
-            bestDistance = d;
-            bestMirrored = m;
-            bestHit = h;
-        }
-    }
-    if (best != 0xFFFFFFFFu) writeChosen(pix, p, surfaceNormal, eye, best, bestMirrored, bestHit, bestFacing, occluders);
-}
-
 // The choices of this invocation's pixels in the current orientation group (projectTile): the
 // nearest reflector taking each so far (kPprNoChoice: none) and its plane distance.
 const uint kPprNoChoice = 0xFFFFFFFFu;
@@ -359,6 +321,55 @@ void writeChoices(vec4 points[kPixelsPerThread], vec3 normals[kPixelsPerThread],
     }
 }
 
+// projectTile where the tile's survivors lie in one cull plane (one orientation) and it built the
+// plane grid. Each pixel mirrors itself once in the plane leader's plane and finds the cells around
+// that hit: each candidate's own plane may lie up to kPprCullPlaneTolerance from the leader's, which
+// moves its hit by at most that times (1 / the cosine of the ray with the normal, plus 2), so the
+// cells within that margin hold every candidate whose rectangle can hold its own hit
+// (ppr_common/plane_grid.h). The invocation then runs the exact per-reflector test over the
+// candidates marked in any of its pixels' cells, in projection order, each read once for all its
+// pixels; a candidate outside a pixel's own cells cannot hold its hit, so the test rejects it there
+// and each pixel makes the choice it would make among its own cells' candidates.
+void projectTileOnGrid(vec4 points[kPixelsPerThread], vec3 normals[kPixelsPerThread], float above[kPixelsPerThread], vec3 eye,
+                       uint candidates, uint occluders) {
+    uvec4 cellsOf[kPixelsPerThread];  // lo x, lo y, hi x, hi y
+    uint live = 0u;  // bit j: pixel j has a point some candidate may reflect
+    float eyeHeight = dot(eye - gridLeaderCenter, gridLeaderNormal);
+    for (uint j = 0u; j < kPixelsPerThread; ++j) {
+        cellsOf[j] = uvec4(1u, 1u, 0u, 0u);  // none
+        if (points[j].w == 0.0) continue;
+        vec3 p = points[j].xyz;
+        float height = dot(p - gridLeaderCenter, gridLeaderNormal);
+        float span = height + eyeHeight;  // the same for every candidate, up to rounding
+        if (!(span > 0.5 * kPprAboveEpsilon)) continue;  // no candidate has the pixel above it and the eye in front
+        vec3 mirrored = p - 2.0 * height * gridLeaderNormal;
+        cellsOf[j] = pprPlaneGridCellsAround(grid, mix(eye, mirrored, eyeHeight / span),
+                                             pprPlaneGridLookupMargin(p, eye, gridLeaderCenter, mirrored, span));
+        live |= 1u << j;
+    }
+    if (live == 0u) return;
+    for (uint w = 0u; w * 32u < candidates; ++w) {
+        uint bits = 0u;
+        for (uint j = 0u; j < kPixelsPerThread; ++j)
+            for (uint y = cellsOf[j].y; y <= cellsOf[j].w; ++y)
+                for (uint x = cellsOf[j].x; x <= cellsOf[j].z; ++x) bits |= gridWords[(x + y * kPprPlaneGridSize) * kPprPlaneGridWords + w];
+        for (; bits != 0u; bits &= bits - 1u) {  // in projection order
+            uint i = survivorAt(w * 32u + uint(findLSB(bits)));
+            ReflectorData r = reflectors[i];
+            if (skipped(r, i)) continue;
+            for (uint j = 0u; j < kPixelsPerThread; ++j) {
+                float d, f;
+                vec3 mirrored, hit;
+                if ((live & (1u << j)) == 0u || !takes(r, points[j].xyz, eye, normals[j], above[j], chosenDistance[j], d, mirrored, hit, f))
+                    continue;
+                chosen[j] = i;
+                chosenDistance[j] = d;
+            }
+        }
+    }
+    writeChoices(points, normals, above, eye, occluders);
+}
+
 // Projects this invocation's pixels of the tile into every reflector among the candidates that
 // reflects them. Reflectors arrive sorted by orientation. Within one orientation only the shape
 // nearest to a pixel (smallest plane distance) that reflects it is used, so each pixel is written at
@@ -376,8 +387,7 @@ void projectTile(vec4 points[kPixelsPerThread], uint candidates, uint occluders)
         above[j] = kPprAboveEpsilon + kPprAboveEpsilonPerMetre * distance(eye, points[j].xyz);
     }
     if (gridPlane != kPprNoCullPlane) {
-        for (uint j = 0u; j < kPixelsPerThread; ++j)
-            if (points[j].w != 0.0) projectPixelOnGrid(pixelOf(j), points[j].xyz, eye, normals[j], above[j], candidates, occluders);
+        projectTileOnGrid(points, normals, above, eye, candidates, occluders);
         return;
     }
     uint group = 0xFFFFFFFFu;

@@ -46,7 +46,7 @@ bool inRange(uint32_t cell, glm::uvec4 range) {
     return x >= range.x && x <= range.z && y >= range.y && y <= range.w;
 }
 
-// The projection's contract (ppr_project.comp, projectPixelOnGrid): a pixel whose hit in a coplanar
+// The projection's contract (ppr_project.comp, projectTileOnGrid): a pixel whose hit in a coplanar
 // reflector's own plane lies in its rectangle (the scan's exact test) finds that reflector among the
 // cells around its hit in the plane leader's plane, within pprPlaneGridLookupMargin. Pixels near and
 // on the rectangle's edges, rays down to grazing, planes up to the cull-plane tolerance apart.
@@ -91,7 +91,7 @@ TEST(PprPlaneGrid, EveryReflectorThatTakesAPixelIsLookedUp) {
             if (d <= 1e-3f || eyeHeight <= 0.0f) continue;
             const vec3 hit = glm::mix(eye, p - 2.0f * d * r.normal, eyeHeight / (eyeHeight + d));
             if (!ppr::gpu::reflectorContains(r, hit)) continue;
-            // The lookup in the leader's plane (projectPixelOnGrid).
+            // The lookup in the leader's plane (projectTileOnGrid).
             const float height = glm::dot(p - leader.center, leader.normal), leaderEyeHeight = glm::dot(eye - leader.center, leader.normal);
             const float span = height + leaderEyeHeight;
             ASSERT_GT(span, 0.5e-3f) << "the grid path would give up on a pixel a reflector takes";
