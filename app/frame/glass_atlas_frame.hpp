@@ -54,6 +54,8 @@ public:
                                                    const ReflectorSet& reflectors, const glm::mat4& viewProj, const glm::vec3& eye,
                                                    VkExtent2D extent);
     const std::optional<GlassStats>& stats(uint32_t slot) const { return stats_[slot]; }
+    // The last packed frame's resolve workgroups (GlassRegionTable::blockCount).
+    uint32_t resolveBlocks() const { return table_.blockCount(); }
 
 private:
     passes::GlassRegionTable table_;

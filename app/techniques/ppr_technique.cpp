@@ -87,9 +87,10 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
         resolve.sceneColor = f.lit;
         resolve.regions = regions.table;
         resolve.regionList = regions.list;
+        resolve.blockStarts = regions.blockStarts;
         resolve.regionCount = glass->regions();
         resolve.atlasSize = glass->atlasSize;
-        resolve.used = glass->usedExtent();
+        resolve.blockCount = f.services.glass.resolveBlocks();
         resolve.flags = resolveFlags(s);
         f.board.put(passes::GlassReflection{f.services.glassReflect.add(f.graph, f.in, resolve), regions.table});
     }

@@ -10,6 +10,9 @@
 // hole filling, filtered sample and anti-bleeding as on screen, ppr_common/ppr_resolve.glsl) into
 // the glass reflection atlas (rgba16f, common/reflection.h alpha codes) the glass forward pass reads.
 // A texel only ever reads its own region: the neighbours hole filling looks at stop at the region's edge.
+// One workgroup per block of kGlassReflectGroupSize² texels of one region (the regions' blocks
+// numbered region after region, regionBlockStarts), so texels outside every region are not visited:
+// they keep the clear, "no reflection".
 layout(local_size_x = kGlassReflectGroupSize, local_size_y = kGlassReflectGroupSize) in;
 layout(set = 0, binding = 1, r32ui) uniform readonly uimage2D atlas;
 layout(set = 0, binding = 2) uniform sampler2D sceneLinear;  // the lit scene, bilinear
@@ -17,6 +20,7 @@ layout(set = 0, binding = 3) uniform sampler2D scenePoint;   // and point sample
 layout(set = 0, binding = 4, scalar) readonly buffer Regions { GlassRegionData regions[]; };  // per reflector
 layout(set = 0, binding = 5, scalar) readonly buffer RegionList { uint regionReflectors[]; };  // reflectors with a region
 layout(set = 0, binding = 6, rgba16f) uniform writeonly image2D outReflection;
+layout(set = 0, binding = 7, scalar) readonly buffer BlockStarts { uint regionBlockStarts[]; };  // per listed region, then the total
 layout(push_constant, scalar) uniform Push { GlassReflectPush pc; };
 
 ivec2 regionLo, regionHi;  // the region of the texel being resolved
@@ -29,19 +33,19 @@ uint fetchValue(ivec2 t) {
 #include "ppr_common/ppr_resolve.glsl"
 
 void main() {
-    ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(texel, imageSize(outReflection)))) return;
-    vec4 result = vec4(0.0, 0.0, 0.0, kReflectionNone);
-    for (uint k = 0u; k < pc.regionCount; ++k) {
-        GlassRegionData r = regions[regionReflectors[k]];
-        regionLo = ivec2(r.atlasOrigin);
-        regionHi = regionLo + ivec2(r.atlasSize);
-        if (any(lessThan(texel, regionLo)) || any(greaterThanEqual(texel, regionHi))) continue;
-        // The screen position this texel stands for (its centre), and the pixels it covers.
-        vec2 screen = r.screenOrigin + (vec2(texel - regionLo) + 0.5) / r.scale;
-        PprResolved resolved = pprResolve(texel, screen, 1.0 / r.scale, pc.flags);
-        if (resolved.valid) result = vec4(resolved.color, resolved.readTexel == texel ? kReflectionHit : kReflectionFilled);
-        break;
-    }
-    imageStore(outReflection, texel, result);
+    // This workgroup's region (the same for all its invocations) and block in it.
+    uint group = gl_WorkGroupID.x, k = 0u;
+    while (k + 1u < pc.regionCount && regionBlockStarts[k + 1u] <= group) ++k;
+    GlassRegionData r = regions[regionReflectors[k]];
+    regionLo = ivec2(r.atlasOrigin);
+    regionHi = regionLo + ivec2(r.atlasSize);
+    uint block = group - regionBlockStarts[k];
+    uint blocksPerRow = (uint(r.atlasSize.x) + kGlassReflectGroupSize - 1u) / kGlassReflectGroupSize;
+    ivec2 texel = regionLo + ivec2(block % blocksPerRow, block / blocksPerRow) * int(kGlassReflectGroupSize) + ivec2(gl_LocalInvocationID.xy);
+    if (any(greaterThanEqual(texel, regionHi))) return;  // the block reaches past its region's edge
+    // The screen position this texel stands for (its centre), and the pixels it covers.
+    vec2 screen = r.screenOrigin + (vec2(texel - regionLo) + 0.5) / r.scale;
+    PprResolved resolved = pprResolve(texel, screen, 1.0 / r.scale, pc.flags);
+    imageStore(outReflection, texel, resolved.valid ? vec4(resolved.color, resolved.readTexel == texel ? kReflectionHit : kReflectionFilled)
+                                                    : vec4(0.0, 0.0, 0.0, kReflectionNone));
 }

@@ -28,10 +28,10 @@ graph::ImageHandle GlassReflectPass::addAtlasView(graph::RenderGraph& g, const F
 
 graph::ImageHandle GlassReflectPass::add(graph::RenderGraph& g, const FrameInputs& in, const GlassReflectInputs& inputs) const {
     const uint32_t size = inputs.atlasSize;
-    // Texels right of and below the packed regions hold no reflection: cleared (cheap, transfer), not dispatched.
+    // Texels outside the regions hold no reflection: cleared (cheap, transfer), not dispatched.
     graph::ImageHandle target = addClearPass(g, in, "ppr.glass.reflection.clear",
                                              g.createImage("ppr.glass.reflection", {size, size, kFormat, 1}), VkClearColorValue{});
-    if (inputs.used.height == 0 || inputs.regionCount == 0) return target;
+    if (inputs.blockCount == 0 || inputs.regionCount == 0) return target;
     gpu::GlassReflectPush push{};
     push.regionCount = inputs.regionCount;
     push.flags = inputs.flags;
@@ -44,8 +44,9 @@ graph::ImageHandle GlassReflectPass::add(graph::RenderGraph& g, const FrameInput
         .storageRead(inputs.regions)
         .storageRead(inputs.regionList)
         .storageReadWrite(target, &out)
+        .storageRead(inputs.blockStarts)
         .push(push)
-        .dispatch(inputs.used, gpu::kGlassReflectGroupSize);
+        .dispatch({inputs.blockCount * gpu::kGlassReflectGroupSize, gpu::kGlassReflectGroupSize}, gpu::kGlassReflectGroupSize);  // a row of blocks
     return out;
 }
 

@@ -9,10 +9,10 @@ namespace ppr::passes {
 struct GlassReflectInputs {
     graph::ImageHandle atlas;      // r32ui, written by ppr.project
     graph::ImageHandle sceneColor;  // the lit scene
-    graph::BufferHandle regions, regionList;  // glass_regions.hpp
+    graph::BufferHandle regions, regionList, blockStarts;  // glass_regions.hpp
     uint32_t regionCount = 0;
     uint32_t atlasSize = 0;        // texels per side
-    VkExtent2D used{};             // the atlas texels holding regions, from its corner: the rest is not dispatched
+    uint32_t blockCount = 0;       // GlassRegionTable::blockCount: one workgroup each; texels outside the regions keep the clear
     uint32_t flags = 0;            // ppr_reflect.h toggles (holes, filter, antibleed)
 };
 

@@ -1,6 +1,7 @@
 #pragma once
-// This frame's glass atlas layout as graph buffers: GlassRegionData per reflector (glass_forward.h)
-// and the list of reflectors that got a region. The CPU packs the atlas; a transfer pass
+// This frame's glass atlas layout as graph buffers: GlassRegionData per reflector (glass_forward.h),
+// the list of reflectors that got a region and where each listed region's blocks of the resolve
+// start. The CPU packs the atlas; a transfer pass
 // ("ppr.glass.regions") writes both with vkCmdUpdateBuffer, so the data travels inside the command
 // buffer (no host-visible copies per frame in flight) and every reader declares it to the graph.
 #include "glass_forward/glass_forward.h"
@@ -14,6 +15,9 @@ namespace ppr::passes {
 struct GlassRegionBuffers {
     graph::BufferHandle table;  // GlassRegionData[reflectors]
     graph::BufferHandle list;   // uint[reflectors]: the first `regions` entries are the panes with a region
+    // uint[reflectors + 1]: the first resolve workgroup of each listed region, then their total
+    // (ppr.glass.reflect runs a kGlassReflectGroupSize² block per workgroup, regions one after another)
+    graph::BufferHandle blockStarts;
 };
 
 class GlassRegionTable {
@@ -30,10 +34,14 @@ public:
 
     // The region of one panel as the shaders see it.
     static gpu::GlassRegionData pack(const scene::GlassRegion& region);
+    // The resolve's workgroups over this frame's regions (GlassRegionBuffers::blockStarts).
+    uint32_t blockCount() const { return blockCount_; }
+    const std::vector<uint32_t>& blockStarts() const { return blockStarts_; }  // as uploaded
 
 private:
     std::vector<gpu::GlassRegionData> table_;
-    std::vector<uint32_t> list_;
+    std::vector<uint32_t> list_, blockStarts_;
+    uint32_t blockCount_ = 0;
 };
 
 }  // namespace ppr::passes

@@ -1,16 +1,20 @@
 // What the glass passes dispatch over: the atlas rows and columns the packed regions fill
-// (app/frame/glass_atlas_frame.hpp); the texels beyond them keep the clear.
+// (app/frame/glass_atlas_frame.hpp), or PPR's resolve, the regions' blocks one after another
+// (passes/glass_reflect/glass_regions.hpp); the texels beyond them keep the clear.
 #include "frame/glass_atlas_frame.hpp"
+#include "glass_reflect/glass_reflect.h"
+#include "glass_reflect/glass_regions.hpp"
 
 #include <gtest/gtest.h>
 
 using ppr::app::GlassStats;
 
 namespace {
-ppr::scene::GlassRegion region(glm::ivec2 origin, glm::ivec2 size) {
+ppr::scene::GlassRegion region(glm::ivec2 origin, glm::ivec2 size, uint32_t reflector = 0) {
     ppr::scene::GlassRegion r;
     r.atlasOrigin = origin;
     r.atlasSize = size;
+    r.reflectorIndex = reflector;
     return r;
 }
 }  // namespace
@@ -26,4 +30,25 @@ TEST(GlassStats, UsedExtentIsTheFarthestRegionEdgeOnEachAxis) {
     stats.layout = {region({1000, 1000}, {24, 24})};
     EXPECT_EQ(stats.usedExtent().width, 1024u);
     EXPECT_EQ(stats.usedExtent().height, 1024u);
+}
+
+TEST(GlassRegionTable, TheResolveRunsEachRegionsBlocksOneRegionAfterAnother) {
+    static_assert(ppr::gpu::kGlassReflectGroupSize == 16u, "the block counts below are for 16x16 blocks");
+    ppr::passes::GlassRegionTable table;
+    table.reserve(4);
+    ppr::scene::GlassAtlasLayout layout;
+    table.fill(layout);
+    EXPECT_EQ(table.blockCount(), 0u);
+    // 130x500: 9 x 32 blocks (partial ones count), 250x240: 16 x 15, 16x16: one; a reflector beyond
+    // the table gets no region and no block.
+    layout.regions = {region({0, 0}, {130, 500}, 2), region({130, 0}, {250, 240}, 0), region({0, 500}, {16, 16}, 3),
+                      region({0, 520}, {40, 40}, 9)};
+    table.fill(layout);
+    EXPECT_EQ(table.blockCount(), 288u + 240u + 1u);
+    const std::vector<uint32_t>& starts = table.blockStarts();
+    ASSERT_EQ(starts.size(), 5u);
+    EXPECT_EQ(starts[0], 0u);
+    EXPECT_EQ(starts[1], 288u);
+    EXPECT_EQ(starts[2], 528u);
+    EXPECT_EQ(starts[3], 529u);  // after the last listed region: the total
 }
