@@ -73,13 +73,15 @@ uint occluderAt(uint k) { return pc.cullTiles == 0u ? k : unpack16(occluderWords
 
 // Occluding shapes: does the segment eye → hit cross another reflector's rectangle first? Coplanar
 // neighbours meet the segment at its end and do not count. Only a reflector whose screen rectangle
-// holds the written pixel can cross that segment (it projects to that one point), so the tile's
-// occluder list is enough. Glass lets the view through: it occludes nothing.
-bool occludedByOtherReflector(vec3 eye, vec3 hit, uint self, uint candidates) {
+// holds the written pixel (`landed`) can cross that segment (it projects to that one point), so the
+// tile's occluder list is enough, and a reflector whose rectangle (grown by kPprCullMarginPx) misses
+// that pixel is passed by without reading the rest of it. Glass lets the view through: it occludes
+// nothing.
+bool occludedByOtherReflector(vec3 eye, vec3 hit, uint self, uint candidates, uvec2 landed) {
     vec3 d = hit - eye;
     for (uint k = 0u; k < candidates; ++k) {
         uint j = occluderAt(k);
-        if (j == self) continue;
+        if (j == self || !pprRectContains(bounds[j].rect, landed)) continue;
         ReflectorData o = reflectors[j];
         if (o.kind == kReflectorGlass) continue;
         float denom = dot(d, o.normal);
@@ -90,13 +92,18 @@ bool occludedByOtherReflector(vec3 eye, vec3 hit, uint self, uint candidates) {
     return false;
 }
 
-// Writes the pixel's offset where its mirror image lands (`target`, pixels); false off screen.
-bool writeOffset(ivec2 pix, vec3 mirrored, out vec2 target) {
+// Where the mirror image lands (`target`, pixels); false behind the camera or off screen.
+bool landing(vec3 mirrored, out vec2 target) {
     vec4 clip = frame.viewProj * vec4(mirrored, 1.0);
     if (clip.w <= 0.0) return false;
     vec2 ndc = clip.xy / clip.w;
     if (any(greaterThanEqual(abs(ndc), vec2(1.0)))) return false;
     target = (ndc * 0.5 + 0.5) * frame.screenSize;
+    return true;
+}
+
+// Writes the pixel's offset where its mirror image lands; false when it does not fit.
+bool writeOffset(ivec2 pix, vec2 target) {
     uint value;
     if (!pprEncode(target - (vec2(pix) + 0.5), value)) return false;  // beyond the 12-bit range: dropped, not wrapped
     imageAtomicMin(intermediate, ivec2(target), value);
@@ -292,7 +299,8 @@ void writeChosen(ivec2 pix, vec3 p, vec3 surfaceNormal, vec3 eye, uint best, vec
         return;
     }
     vec2 target;
-    if (!occludedByOtherReflector(eye, hit, best, occluders) && writeOffset(pix, mirrored, target) && pc.splat != 0u)
+    if (landing(mirrored, target) && !occludedByOtherReflector(eye, hit, best, occluders, uvec2(target)) && writeOffset(pix, target) &&
+        pc.splat != 0u)
         splatMagnified(pix, p, surfaceNormal, best, mirrored, facing, target);
 }
 
