@@ -179,8 +179,9 @@ void writeChosen(ivec2 pix, vec3 p, vec3 surfaceNormal, vec3 eye, uint best, vec
 bool skipped(ReflectorData r, uint i) { return r.kind == kReflectorGlass && (pc.glass == 0u || glassRegions[i].valid == 0u); }
 
 // The choices of this invocation's pixels in the current orientation group (projectTile): the
-// nearest reflector taking each so far (kPprNoChoice: none) and its plane distance.
+// nearest reflector taking each so far (kPprNoChoice: none) and its plane distance (kPprUnbounded: none).
 const uint kPprNoChoice = 0xFFFFFFFFu;
+const float kPprUnbounded = 3.4e38;
 uint chosen[kPixelsPerThread];
 float chosenDistance[kPixelsPerThread];
 
@@ -191,11 +192,11 @@ void writeChoices(vec4 points[kPixelsPerThread], vec3 normals[kPixelsPerThread],
     for (uint j = 0u; j < kPixelsPerThread; ++j) {
         uint best = chosen[j];
         chosen[j] = kPprNoChoice;
-        chosenDistance[j] = 3.4e38;
+        chosenDistance[j] = kPprUnbounded;
         if (best == kPprNoChoice) continue;
         float d, f;
         vec3 mirrored, hit;
-        takes(reflectors[best], points[j].xyz, eye, normals[j], above[j], 3.4e38, d, mirrored, hit, f);
+        takes(reflectors[best], points[j].xyz, eye, normals[j], above[j], kPprUnbounded, d, mirrored, hit, f);
         writeChosen(pixelOf(j), points[j].xyz, normals[j], eye, best, mirrored, hit, f, occluders);
     }
 }
@@ -267,7 +268,7 @@ void projectTile(vec4 points[kPixelsPerThread], uint candidates, uint occluders)
     uint live = 0u;  // bit j: pixel j has a point (not sky, on screen)
     for (uint j = 0u; j < kPixelsPerThread; ++j) {
         chosen[j] = kPprNoChoice;
-        chosenDistance[j] = 3.4e38;
+        chosenDistance[j] = kPprUnbounded;
         normals[j] = pc.facingOnly != 0u && points[j].w != 0.0 ? texelFetch(normalTex, pixelOf(j), 0).xyz : vec3(0.0);
         above[j] = kPprAboveEpsilon + kPprAboveEpsilonPerMetre * distance(eye, points[j].xyz);
         if (points[j].w != 0.0) live |= 1u << j;
