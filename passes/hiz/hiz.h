@@ -32,12 +32,10 @@ PPR_INLINE uvec2 hizPaddedSize(uvec2 screen) {
     return ((screen + uvec2(cell - 1u)) / cell) * cell;
 }
 PPR_INLINE uvec2 hizLevelSize(uvec2 padded, uint level) { return uvec2(padded.x >> level, padded.y >> level); }
-// Top-left texel of a level (≥ 1) in the atlas.
-PPR_INLINE ivec2 hizLevelOrigin(uvec2 padded, uint level) {
-    int y = 0;
-    for (uint l = 1u; l < level; ++l) y += int(padded.y >> l);
-    return ivec2(0, y);
-}
+// Top-left texel of a level (≥ 1) in the atlas: below levels 1..level−1, whose heights padded.y/2,
+// padded.y/4, ... sum to padded.y − padded.y/2^(level−1) exactly (padded.y is a multiple of the
+// coarsest cell). Closed form, not a loop: the march calls it at every change of level.
+PPR_INLINE ivec2 hizLevelOrigin(uvec2 padded, uint level) { return ivec2(0, int(padded.y - (padded.y >> (level - 1u)))); }
 // Levels 1.. stacked: half the padded width, and heights that sum to less than the padded height.
 PPR_INLINE uvec2 hizAtlasSize(uvec2 padded) { return uvec2(padded.x / 2u, padded.y); }
 // Level-0 value of a depth-buffer sample (reverse-Z, 0 = sky).

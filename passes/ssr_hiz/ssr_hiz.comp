@@ -16,9 +16,14 @@
 // pixel coordinates, so both the cell exits and the point where the ray reaches a depth are one
 // division each.
 
-// The hierarchy's value of a cell: level 0 is the depth buffer itself, levels 1.. are in the atlas.
-float hizCellMin(int level, ivec2 origin, ivec2 cell) {
-    return level == 0 ? hizLevel0(depthTex, cell) : imageLoad(hizAtlas, origin + cell).r;
+// The hierarchy's value of a cell: level 0 is the depth buffer itself (hizLevel0), levels 1.. are in
+// the atlas. `depth` gets the level-0 sample, which the surface test then uses without fetching it
+// again.
+float hizCellMin(int level, ivec2 origin, ivec2 cell, out float depth) {
+    depth = 0.0;
+    if (level != 0) return imageLoad(hizAtlas, origin + cell).r;
+    depth = hizLevel0Depth(depthTex, cell);
+    return hizFromReverseZ(depth);
 }
 
 bool ssrTrace(SsrRay ray, out vec2 hitPixel) {
@@ -43,7 +48,8 @@ bool ssrTrace(SsrRay ray, out vec2 hitPixel) {
     for (uint i = 0u; i < pc.maxSteps && t < 1.0; ++i) {
         vec2 cellF = ssrCellAt(seg, t, cellSize);
         ivec2 cell = clamp(ivec2(cellF), ivec2(0), levelSize - 1);  // the lookup nudge can reach past the edge
-        float cellMin = hizCellMin(level, origin, cell);
+        float depth;
+        float cellMin = hizCellMin(level, origin, cell, depth);
         float tExit = ssrCellExit(seg, cellF, cellSize);
         int nextLevel;
         if (d0 + t * dd < cellMin) {
@@ -76,7 +82,7 @@ bool ssrTrace(SsrRay ray, out vec2 hitPixel) {
         // A level-0 pixel whose surface the ray has reached (here or from its entry on). It reflects
         // that surface unless the ray stays further behind it than the surface is thick over the
         // rest of the pixel (and the slack): then the ray passes behind an object and goes on.
-        float s = ssrSurfaceDistance(cell);
+        float s = depth > 0.0 ? ssrNear() / depth : 1e30;  // ssrSurfaceDistance(cell), from the fetch above
         float kNow = ray.k0 + t * dk, kOut = ray.k0 + min(tExit + slack, 1.0) * dk;
         float nearestRayDistance = 1.0 / max(kNow, kOut);  // 1/k is monotonic along the segment
         if (nearestRayDistance <= s + ssrThicknessAt(s)) {
