@@ -32,6 +32,9 @@ struct ShownReflection {  // what the composite blends: the technique's, or A/B'
 struct DepthHierarchy {  // when the frame built one (ssr-hiz, PPR's fallback)
     passes::HizAtlas atlas;
 };
+struct DepthHierarchyTiles {  // PPR's reach pass stored the hierarchy's levels of every tile (HizPass::add's fineLevels)
+    graph::ImageHandle atlas;
+};
 struct EnvironmentBound {  // when a technique falls back to the environment (TechniqueFrame::environment)
     passes::Environment environment;
 };

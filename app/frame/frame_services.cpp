@@ -29,7 +29,9 @@ std::optional<gpu::PprFrameStats> FrameStatsBuffers::read(uint32_t slot) const {
 
 passes::HizAtlas TechniqueFrame::depthHierarchy() {
     if (const DepthHierarchy* built = board.find<DepthHierarchy>()) return built->atlas;
-    const passes::HizAtlas hiz = services.hiz.add(graph, in, gbuffer.depth, settings.ssr.hizThreads);
+    const DepthHierarchyTiles* tiles = board.find<DepthHierarchyTiles>();
+    const passes::HizAtlas hiz = services.hiz.add(graph, in, gbuffer.depth, settings.ssr.hizThreads,
+                                                  tiles ? std::optional<graph::ImageHandle>(tiles->atlas) : std::nullopt);
     board.put(DepthHierarchy{hiz});
     return hiz;
 }

@@ -72,7 +72,8 @@ struct TechniqueFrame {
     scene::CameraPose camera;
 
     VkBuffer reflectorData() const { return services.reflectors.buffer().reflectors(slot); }
-    // The depth hierarchy of this frame's depth (built once, published as DepthHierarchy).
+    // The depth hierarchy of this frame's depth (built once, published as DepthHierarchy; on top of
+    // DepthHierarchyTiles when PPR's reach pass stored those).
     passes::HizAtlas depthHierarchy();
     // Tile lists of this frame; reflector ids above maxReflectorId do not make a tile planar.
     passes::TileLists classifyTiles(uint32_t maxReflectorId);

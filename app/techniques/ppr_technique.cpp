@@ -1,6 +1,7 @@
 #include "techniques/ppr_technique.hpp"
 
 #include "common/reflected_path.hpp"
+#include "hiz/hiz_pass.hpp"
 #include "ppr_clear/ppr_clear_pass.hpp"
 #include "ppr_common/encoding.h"
 #include "ppr_reflect/ppr_reflect.h"
@@ -72,10 +73,20 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
     project.facingOnly = s.facing;
     project.splat = s.splat;
     project.threads = s.projectThreads;
+    // The debug views PPR draws over the whole screen are left as they are: no fallback over them.
+    const uint32_t debug = f.settings.view.debug;
+    const bool pprDebugView = debug == gpu::kDebugIntermediate || debug == gpu::kDebugHoles || debug == gpu::kDebugTiles;
+    const bool fallbackMarches = s.fallback != PprFallback::None && !pprDebugView;
     // With culling and indirect dispatch, the projection runs only on the tiles that can be reflected.
-    if (s.tiles && f.settings.tiles.indirect)
-        project.reach = reach_.add(f.graph, f.in, binding,
-                                   {project.depth, project.bounds, project.visible, project.stats, project.tilesX, project.tilesY, s.reachThreads});
+    if (s.tiles && f.settings.tiles.indirect) {
+        passes::PprReachInputs reach{project.depth, project.bounds, project.visible, project.stats, project.tilesX, project.tilesY, s.reachThreads};
+        // It reads every depth texel of each tile for the tile's box; with one invocation per tile it
+        // stores the tile's levels of the depth hierarchy the fallback marches from the same reads.
+        if (fallbackMarches && reach_.writesHierarchy(s.reachThreads)) reach.hierarchy = passes::HizPass::createAtlas(f.graph, f.in);
+        graph::ImageHandle hierarchyTiles;
+        project.reach = reach_.add(f.graph, f.in, binding, reach, &hierarchyTiles);
+        if (reach.hierarchy) f.board.put(DepthHierarchyTiles{hierarchyTiles});
+    }
     passes::GlassRegionBuffers regions;
     addGlass(f, project, regions);
     const passes::PprProjectOutputs scatter = project_.add(f.graph, f.in, binding, project);
@@ -112,9 +123,6 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
     // TAA's reflection history reprojects through the virtual point, which needs each pixel's path length.
     const bool taa = f.settings.taa.enabled && f.settings.view.debug == gpu::kDebugNone;
     if (taa) reflect.distance = f.graph.createImage("ppr.distance", {f.in.extent.width, f.in.extent.height, passes::kReflectedPathFormat, 1});
-    // The debug views PPR draws over the whole screen are left as they are.
-    const uint32_t debug = reflect.debugView;
-    const bool pprDebugView = debug == gpu::kDebugIntermediate || debug == gpu::kDebugHoles || debug == gpu::kDebugTiles;
     // The holes the fallback marches are normal-mapped pixels (none with normalmap=off): the
     // reflection pass lists their tiles for it.
     const bool marchHoles = s.fallback == PprFallback::SsrHoles && s.normalMap != NormalMap::Off && !pprDebugView;
@@ -123,7 +131,7 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
     graph::ImageHandle distance;
     std::optional<passes::TileLists> holeTiles;
     graph::ImageHandle reflection = reflect_.add(f.graph, f.in, reflect, &distance, &holeTiles);
-    if (s.fallback != PprFallback::None && !pprDebugView) {
+    if (fallbackMarches) {
         passes::SsrInputs fallback = ssrInputs(f, tiles);
         const passes::HizAtlas hiz = f.depthHierarchy();
         fallback.hiz = hiz.image;

@@ -6,8 +6,8 @@
 namespace ppr::passes {
 
 WidthPipelines::WidthPipelines(const vk::Context& ctx, shader::Spirv spirv, shader::PipelineLayoutDesc layout, std::string name,
-                               WorkgroupWidths widths)
-    : ctx_(ctx), spirv_(spirv), layout_(std::move(layout)), name_(std::move(name)), widths_(widths) {
+                               WorkgroupWidths widths, std::vector<uint32_t> more)
+    : ctx_(ctx), spirv_(spirv), layout_(std::move(layout)), name_(std::move(name)), widths_(widths), more_(std::move(more)) {
     get(0);
 }
 
@@ -19,7 +19,8 @@ const shader::Pipeline& WidthPipelines::get(uint32_t width) const {
         throw std::invalid_argument(name_ + ": " + std::to_string(width) + " invocations per workgroup is not offered");
     auto it = pipelines_.find(width);
     if (it != pipelines_.end()) return it->second;
-    const uint32_t specialization[] = {width};
+    std::vector<uint32_t> specialization{width};
+    specialization.insert(specialization.end(), more_.begin(), more_.end());
     return pipelines_.emplace(width, shader::createComputePipeline(ctx_, spirv_, layout_, name_, specialization)).first->second;
 }
 

@@ -10,6 +10,7 @@
 #include <map>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace ppr::passes {
 
@@ -32,8 +33,9 @@ struct WorkgroupWidths {
 
 class WidthPipelines {
 public:
+    // `more`: the values of constant_id 1, 2, ... (a variant of the shader), the same for every width.
     WidthPipelines(const vk::Context& ctx, shader::Spirv spirv, shader::PipelineLayoutDesc layout, std::string name,
-                   WorkgroupWidths widths);
+                   WorkgroupWidths widths, std::vector<uint32_t> more = {});
     // The width `asked` stands for: itself, or for 0 the device's default.
     uint32_t resolve(uint32_t asked) const;
     // The pipeline for `width` invocations per workgroup (0: the device's default); throws for a width not offered.
@@ -45,6 +47,7 @@ private:
     shader::PipelineLayoutDesc layout_;
     std::string name_;
     WorkgroupWidths widths_;
+    std::vector<uint32_t> more_;
     mutable std::map<uint32_t, shader::Pipeline> pipelines_;
 };
 

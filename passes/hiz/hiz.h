@@ -16,6 +16,10 @@
 
 PPR_CONST(uint, kHizLevels, 7u)        // levels 0..6: the coarsest cell is 64 px
 PPR_CONST(float, kHizEmpty, 1.0f)      // sky and padding
+// Levels 1..kHizTileLevel of a 16x16 PPR tile: what PPR's reach pass, which reads every depth texel of
+// the tile for its box, stores on the way when a fallback will march the hierarchy (ppr_reach.comp);
+// the build then only adds the levels above (hiz_build.comp, kFineLevelsBuilt).
+PPR_CONST(uint, kHizTileLevel, 4u)
 // The build is one dispatch, a workgroup per coarsest cell (hiz_build.comp). Its invocations each
 // reduce a square block of the cell alone, up to the block's one texel, and the group reduces those,
 // a level per barrier: --set hiz_threads (specialization constant 0; 16, 64 or 256 invocations:

@@ -11,27 +11,23 @@
 //
 // Each invocation takes a square block of the cell (kThreads of them, in Morton order) and walks its
 // level-2 texels in Morton order too, so that every fourth completes a level-3 texel and every
-// sixteenth a level-4 one, up to the block's single texel: registers only. The group then reduces the
+// sixteenth a level-4 one, up to the block's single texel: registers only (hiz/hiz_block.glsl, which
+// PPR's reach pass runs over its tiles as well: kFineLevelsBuilt). The group then reduces the
 // blocks' texels in shared memory, one level per barrier. min is exact, so the order of the reduction
 // changes no bit of the result. One dispatch instead of one per level: on lavapipe 1.2–1.4 ms instead
 // of 2.4–2.9 at 1280x720 (docs/performance.md).
 layout(local_size_x_id = 0) in;
 layout(constant_id = 0) const uint kThreads = kHizThreads;  // HizPass always specialises it
+// PPR's reach pass has stored levels 1..kHizTileLevel of every tile of the screen: a block inside the
+// tile grid is read at its own level instead of walked (blocks beyond it, the padding, still are).
+layout(constant_id = 1) const bool kFineLevelsBuilt = false;
 layout(set = 0, binding = 1) uniform sampler2D depthTex;
-layout(set = 0, binding = 2, r32f) uniform image2D atlas;
+layout(set = 0, binding = 2, r32f) uniform image2D hizAtlas;
 
 const uint kCellLevel = kHizLevels - 1u;  // the cell is one texel of the coarsest level
 shared float reduced[2][kThreads];        // ping-pong: a level's texels, read while the next is written
 
-// Bits 0, 2, 4… of i as x and 1, 3, 5… as y: the i-th position of a Morton walk.
-uvec2 mortonPosition(uint i) {
-    uvec2 v = uvec2(i, i >> 1u) & 0x5555u;
-    v = (v | (v >> 1u)) & 0x3333u;
-    v = (v | (v >> 2u)) & 0x0F0Fu;
-    return (v | (v >> 4u)) & 0x00FFu;
-}
-
-float levelOne(ivec2 c) {
+float hizQuad(ivec2 c) {
     ivec2 p = 2 * c;
     if (all(lessThan(p + 1, ivec2(frame.screenSize)))) {
         // The whole quad on screen: one gather (the sample point is the quad's shared corner).
@@ -41,8 +37,7 @@ float levelOne(ivec2 c) {
     return min(min(hizLevel0(depthTex, p), hizLevel0(depthTex, p + ivec2(1, 0))),
                min(hizLevel0(depthTex, p + ivec2(0, 1)), hizLevel0(depthTex, p + ivec2(1, 1))));
 }
-
-void store(uvec2 padded, uint level, ivec2 texel, float v) { imageStore(atlas, hizLevelOrigin(padded, level) + texel, vec4(v)); }
+#include "hiz/hiz_block.glsl"
 
 void main() {
     uvec2 padded = hizPaddedSize(uvec2(frame.screenSize));
@@ -50,41 +45,12 @@ void main() {
     // kThreads is 4^k: blocks of 64 / 2^k level-0 texels a side, reduced alone up to level blockLevel.
     uint blockLevel = kCellLevel - uint(findMSB(kThreads)) / 2u;
     ivec2 cell = ivec2(gl_WorkGroupID.xy);
-    ivec2 block = cell * int(1u << (kCellLevel - blockLevel)) + ivec2(mortonPosition(lid));  // in level blockLevel's texels
+    ivec2 block = cell * int(1u << (kCellLevel - blockLevel)) + ivec2(hizMortonPosition(lid));  // in level blockLevel's texels
 
-    // The block's level-2 texels in Morton order, each from its four level-1 texels; every fourth
-    // completes a level-3 texel, every sixteenth a level-4 one (blocks stop at level 2, 3 or 4:
-    // hiz_threads ≥ 16). pending3, pending4: the minimum so far of the current texel's texels below.
-    float pending3 = kHizEmpty, pending4 = kHizEmpty;
-    uint texels = 1u << (2u * (blockLevel - 2u));  // level-2 texels in the block
-    float v = kHizEmpty;
-    for (uint i = 0u; i < texels; ++i) {
-        ivec2 texel = block * int(1u << (blockLevel - 2u)) + ivec2(mortonPosition(i));
-        ivec2 below = 2 * texel;
-        float a = levelOne(below), b = levelOne(below + ivec2(1, 0)), c = levelOne(below + ivec2(0, 1)), d = levelOne(below + ivec2(1, 1));
-        store(padded, 1u, below, a);
-        store(padded, 1u, below + ivec2(1, 0), b);
-        store(padded, 1u, below + ivec2(0, 1), c);
-        store(padded, 1u, below + ivec2(1, 1), d);
-        v = min(min(a, b), min(c, d));
-        store(padded, 2u, texel, v);
-        if (blockLevel == 2u) continue;
-        if ((i & 3u) != 3u) {
-            pending3 = min(pending3, v);
-            continue;
-        }
-        v = min(pending3, v);
-        pending3 = kHizEmpty;
-        store(padded, 3u, block * int(1u << (blockLevel - 3u)) + ivec2(mortonPosition(i >> 2u)), v);
-        if (blockLevel == 3u) continue;
-        if (((i >> 2u) & 3u) != 3u) {
-            pending4 = min(pending4, v);
-            continue;
-        }
-        v = min(pending4, v);
-        pending4 = kHizEmpty;
-        store(padded, 4u, block * int(1u << (blockLevel - 4u)) + ivec2(mortonPosition(i >> 4u)), v);
-    }
+    ivec2 tile = block >> int(kHizTileLevel - blockLevel);  // blockLevel <= kHizTileLevel: hiz_threads >= 16
+    ivec2 tileGrid = (ivec2(frame.screenSize) + int(1u << kHizTileLevel) - 1) >> int(kHizTileLevel);
+    float v = kFineLevelsBuilt && all(lessThan(tile, tileGrid)) ? imageLoad(hizAtlas, hizLevelOrigin(padded, blockLevel) + block).r
+                                                                 : hizReduceBlock(padded, block, blockLevel);
     // v is now the block's texel of blockLevel.
     reduced[0][lid] = v;
     uint count = kThreads, from = 0u;
@@ -94,7 +60,7 @@ void main() {
         if (lid < count) {
             v = min(min(reduced[from][4u * lid], reduced[from][4u * lid + 1u]), min(reduced[from][4u * lid + 2u], reduced[from][4u * lid + 3u]));
             reduced[1u - from][lid] = v;
-            store(padded, level, cell * int(1u << (kCellLevel - level)) + ivec2(mortonPosition(lid)), v);
+            hizStore(padded, level, cell * int(1u << (kCellLevel - level)) + ivec2(hizMortonPosition(lid)), v);
         }
         from = 1u - from;
     }

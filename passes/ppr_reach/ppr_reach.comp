@@ -6,6 +6,7 @@
 #include "ppr_common/tile_culling.h"
 #include "ppr_common/tiles.h"
 #include "ppr_reach/ppr_reach.h"
+#include "hiz/hiz.h"
 
 // Before the projection pass, with per-tile culling and indirect dispatch: which screen tiles can be
 // reflected at all? kLanes invocations per tile find the world-space box of the tile's pixels, as the
@@ -18,8 +19,12 @@
 // kLanes invocations per tile (a specialization constant, --set reach_threads: by device, ppr_reach.h),
 // kPprReachGroupSize / kLanes tiles per workgroup, the tiles in row order (the workgroups too, in
 // rows of kPprReachGroupsPerRow).
+// With kWritesHierarchy (one lane per tile only: PprReachPass), the lane walks its tile's quads in
+// the depth hierarchy's block order and stores the hierarchy's levels 1..kHizTileLevel of the tile
+// from the same gathers (hiz/hiz_block.glsl), which the hierarchy's build then does not read again.
 layout(local_size_x = kPprReachGroupSize) in;
 layout(constant_id = 0) const uint kLanes = kPprReachThreads;  // PprReachPass always specialises it
+layout(constant_id = 1) const bool kWritesHierarchy = false;
 layout(set = 0, binding = 1) uniform sampler2D depthTex;
 layout(set = 0, binding = 2, scalar) readonly buffer Reflectors { ReflectorData reflectors[]; };
 layout(set = 0, binding = 3, scalar) readonly buffer Bounds { PprReflectorBounds bounds[]; };
@@ -29,6 +34,7 @@ layout(set = 0, binding = 6, scalar) writeonly buffer ReachTiles { PprReachedTil
 layout(set = 0, binding = 7, scalar) writeonly buffer TileSurvivors { uint tileSurvivors[]; };
 layout(set = 0, binding = 8, scalar) buffer Stats { PprFrameStats stats; };
 layout(set = 0, binding = 9, scalar) readonly buffer Visible { PPR_VISIBLE_REFLECTORS; };
+layout(set = 0, binding = 10, r32f) uniform writeonly image2D hizAtlas;  // kWritesHierarchy; else a stand-in
 layout(push_constant, scalar) uniform Push { PprReachPush pc; };
 
 const uint kTilesPerGroup = kPprReachGroupSize / kLanes;
@@ -39,6 +45,33 @@ shared uint everyTile;  // a reflector beyond the plane tables is judged on its 
 // Per tile of the workgroup: its box as order-preserving uints, and whether a lane found it reachable.
 shared uvec3 tileLo[kTilesPerGroup], tileHi[kTilesPerGroup];
 shared uint tileReached[kTilesPerGroup];
+
+// This invocation's share of its tile's box, as order-preserving uints (addQuad).
+uvec3 boxLo = uvec3(0xFFFFFFFFu), boxHi = uvec3(0u);
+
+// The points of the 2x2 pixel quad whose top-left pixel is `quad`, added to the box, from the
+// positions the projection pass reconstructs (it culls with this box, listed with the tile below,
+// and does not reduce its own). One gather; its order: (0,1), (1,1), (1,0), (0,0). Returns the
+// quad's texel of the depth hierarchy's level 1: the min of 1 − depth over it, empty beyond the screen.
+float addQuad(ivec2 quad) {
+    if (any(greaterThanEqual(quad, ivec2(frame.screenSize)))) return kHizEmpty;
+    const ivec2 corners[4] = ivec2[4](ivec2(0, 1), ivec2(1, 1), ivec2(1, 0), ivec2(0, 0));
+    vec4 depths = textureGather(depthTex, vec2(quad + 1) * frame.invScreenSize, 0);
+    float nearest = kHizEmpty;
+    for (uint c = 0u; c < 4u; ++c) {
+        ivec2 pix = quad + corners[c];
+        if (any(greaterThanEqual(pix, ivec2(frame.screenSize)))) continue;  // the clamped gather repeats the edge
+        nearest = min(nearest, hizFromReverseZ(depths[c]));
+        if (depths[c] <= 0.0) continue;  // sky
+        uvec3 ordered = orderedFromFloat(worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depths[c]));
+        boxLo = min(boxLo, ordered);
+        boxHi = max(boxHi, ordered);
+    }
+    return nearest;
+}
+
+float hizQuad(ivec2 texel) { return addQuad(2 * texel); }
+#include "hiz/hiz_block.glsl"
 
 void gatherPlaneRectangles() {
     uint lid = gl_LocalInvocationIndex;
@@ -124,42 +157,29 @@ void main() {
     if (visibleCounts.reflecting > kPprReachPerReflector) gatherPlaneRectangles();  // uniform: one value for all
     barrier();
 
-    // The box of the tile's points, from the positions the projection pass reconstructs: it culls
-    // with this box (listed below with the tile) and does not reduce its own.
+    // The box of the tile's points (addQuad), each lane from its share of the tile's 2x2 quads.
     if (inside) {
-        uvec3 lo = uvec3(0xFFFFFFFFu), hi = uvec3(0u);
-        ivec2 origin = ivec2(tile) * int(kPprTileSize);
-        // 2x2 pixel quads, one gather each; textureGather's order: (0,1), (1,1), (1,0), (0,0).
-        const uint quadsPerRow = kPprTileSize / 2u;
-        const ivec2 corners[4] = ivec2[4](ivec2(0, 1), ivec2(1, 1), ivec2(1, 0), ivec2(0, 0));
-        for (uint k = lane; k < quadsPerRow * quadsPerRow; k += kLanes) {
-            ivec2 quad = origin + 2 * ivec2(k % quadsPerRow, k / quadsPerRow);
-            if (any(greaterThanEqual(quad, ivec2(frame.screenSize)))) continue;
-            vec4 depths = textureGather(depthTex, vec2(quad + 1) * frame.invScreenSize, 0);
-            for (uint c = 0u; c < 4u; ++c) {
-                ivec2 pix = quad + corners[c];
-                // sky, or beyond the screen (where the clamped gather repeats the edge)
-                if (depths[c] <= 0.0 || any(greaterThanEqual(pix, ivec2(frame.screenSize)))) continue;
-                vec3 p = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depths[c]);
-                uvec3 ordered = orderedFromFloat(p);
-                lo = min(lo, ordered);
-                hi = max(hi, ordered);
-            }
+        if (kWritesHierarchy && kLanes == 1u) {  // specialization constants: uniform
+            hizReduceBlock(hizPaddedSize(uvec2(frame.screenSize)), ivec2(tile), kHizTileLevel);
+        } else {
+            const uint quadsPerRow = kPprTileSize / 2u;
+            for (uint k = lane; k < quadsPerRow * quadsPerRow; k += kLanes)
+                addQuad(ivec2(tile) * int(kPprTileSize) + 2 * ivec2(k % quadsPerRow, k / quadsPerRow));
         }
-        if (lo.x <= hi.x) {
-            atomicMin(tileLo[slot].x, lo.x);
-            atomicMin(tileLo[slot].y, lo.y);
-            atomicMin(tileLo[slot].z, lo.z);
-            atomicMax(tileHi[slot].x, hi.x);
-            atomicMax(tileHi[slot].y, hi.y);
-            atomicMax(tileHi[slot].z, hi.z);
+        if (boxLo.x <= boxHi.x) {
+            atomicMin(tileLo[slot].x, boxLo.x);
+            atomicMin(tileLo[slot].y, boxLo.y);
+            atomicMin(tileLo[slot].z, boxLo.z);
+            atomicMax(tileHi[slot].x, boxHi.x);
+            atomicMax(tileHi[slot].y, boxHi.y);
+            atomicMax(tileHi[slot].z, boxHi.z);
         }
     }
     barrier();
     bool hasContent = inside && tileLo[slot].x <= tileHi[slot].x;
     if (hasContent) {
-        vec3 boxLo = floatFromOrdered(tileLo[slot]), boxHi = floatFromOrdered(tileHi[slot]);
-        bool reached = visibleCounts.reflecting <= kPprReachPerReflector ? reachesAReflector(boxLo, boxHi, lane) : reachesAPlane(boxLo, boxHi, lane);
+        vec3 lo = floatFromOrdered(tileLo[slot]), hi = floatFromOrdered(tileHi[slot]);
+        bool reached = visibleCounts.reflecting <= kPprReachPerReflector ? reachesAReflector(lo, hi, lane) : reachesAPlane(lo, hi, lane);
         if (reached) atomicOr(tileReached[slot], 1u);
     }
     barrier();

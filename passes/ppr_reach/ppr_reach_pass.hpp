@@ -7,6 +7,8 @@
 #include "ppr_project/ppr_project_pass.hpp"
 #include "ppr_reach/reach_threads.hpp"
 
+#include <optional>
+
 namespace ppr::passes {
 
 struct PprReachInputs {
@@ -16,19 +18,29 @@ struct PprReachInputs {
     graph::BufferHandle stats;   // PprFrameStats (tilesWithContent added to)
     uint32_t tilesX = 0, tilesY = 0;
     uint32_t threads = 0;  // invocations per tile, one of kReachThreadChoices; 0: autoThreads
+    // The depth hierarchy's atlas (hiz/hiz.h), when a fallback will march it and the pass runs one
+    // invocation per tile (writesHierarchy): levels 1..kHizTileLevel of every tile are stored into it
+    // from the gathers the boxes take, and HizPass adds the levels above.
+    std::optional<graph::ImageHandle> hierarchy;
 };
 
 class PprReachPass {
 public:
     explicit PprReachPass(const vk::Context& ctx);
     // Clears the arguments ("ppr.reach.clear", transfer) and lists the reachable tiles ("ppr.reach").
-    PprTileList add(graph::RenderGraph& g, const FrameInputs& in, const ReflectorBinding& reflectors, const PprReachInputs& inputs) const;
+    // With inputs.hierarchy, `hierarchyWritten` gets the atlas as written.
+    PprTileList add(graph::RenderGraph& g, const FrameInputs& in, const ReflectorBinding& reflectors, const PprReachInputs& inputs,
+                    graph::ImageHandle* hierarchyWritten = nullptr) const;
+    // Whether the pass run with `threads` invocations per tile (0: autoThreads) can store the depth
+    // hierarchy's tile levels: with one invocation per tile, which walks the tile's quads alone.
+    bool writesHierarchy(uint32_t threads) const { return pipelines_.resolve(threads) == 1u; }
     // What threads = 0 means on this device: kPprReachThreads on a CPU, kPprReachThreadsGpu elsewhere.
     static uint32_t autoThreads(const vk::DeviceInfo& device);
 
 private:
     const vk::Context& ctx_;
     WidthPipelines pipelines_;
+    WidthPipelines hierarchyPipelines_;  // kWritesHierarchy
 };
 
 }  // namespace ppr::passes

@@ -82,6 +82,25 @@ TEST(hiz, AtlasIsTheMinReductionOfTheDepthBuffer) {
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
 
+// PPR's fallback: with one reach invocation per tile (reach_threads=1, a CPU device's default) the
+// reach pass stores every tile's levels 1..4 and the build adds the padding and the levels above, read
+// back at the level of each width's blocks (16, 8, 4 texels a side); with 4 the build does it all.
+TEST(hiz, PprReachStoresTheSameHierarchy) {
+    GpuFixture f;
+    f.headless->setTechnique("ppr");
+    for (const char* reachThreads : {"1", "4"})
+        for (uint32_t threads : passes::kHizThreadChoices) {
+            f.headless->settings().set("reach_threads", reachThreads);
+            f.headless->settings().set("hiz_threads", std::to_string(threads));
+            for (VkExtent2D size : {VkExtent2D{320, 180}, VkExtent2D{203, 117}, VkExtent2D{61, 37}}) {
+                const app::DepthCapture c = f.headless->captureDepth(f.camera("overview"), size);
+                expectAtlasIsMinOfDepth(c, "ppr " + std::to_string(size.width) + "x" + std::to_string(size.height) + " reach_threads=" +
+                                               reachThreads + " hiz_threads=" + std::to_string(threads));
+            }
+        }
+    EXPECT_EQ(f.ctx->validationErrors(), 0u);
+}
+
 TEST(hiz, NoHierarchyWithoutATechniqueThatUsesIt) {
     GpuFixture f;
     f.headless->setTechnique("ssr-brute");
