@@ -267,7 +267,8 @@ std::string benchMarkdown(const BenchResults& r, const std::string& commandLine)
     if (!r.techniques.empty()) {
         md += "## Techniques (camera " + r.techniquesCamera + ")\n\n";
         md += "GPU ms: the technique's own passes (bold below; tile classification `tiles.*` for ppr and ssr-*, the depth "
-              "hierarchy `hiz.*` for ssr-hiz and ppr's fallback). × PPR / × floor: GPU ms over ppr's / floor's (floor: the "
+              "hierarchy `hiz.*` for ssr-hiz and ppr's fallback; with one `ppr.reach` invocation per tile, a CPU device's default, "
+              "that pass stores the hierarchy's levels 1-4 and counts in ppr's planar part). × PPR / × floor: GPU ms over ppr's / floor's (floor: the "
               "least any screen-space reflection costs; it draws none). PSNR and coverage against planar; frame ms: the whole "
               "frame.\n\n";
         md += techniquesTable(r) + "\n";
