@@ -1,9 +1,9 @@
 #pragma once
 // This frame's glass atlas layout as graph buffers: GlassRegionData per reflector (glass_forward.h),
 // the list of reflectors that got a region and where each listed region's blocks of the resolve
-// start. The CPU packs the atlas; a transfer pass
-// ("ppr.glass.regions") writes both with vkCmdUpdateBuffer, so the data travels inside the command
-// buffer (no host-visible copies per frame in flight) and every reader declares it to the graph.
+// start. The CPU packs the atlas; a transfer pass ("ppr.glass.regions") writes all three with
+// vkCmdUpdateBuffer, so the data travels inside the command buffer (no host-visible copies per frame
+// in flight) and every reader declares it to the graph.
 #include "glass_forward/glass_forward.h"
 #include "graph/graph.hpp"
 #include "scene/glass_atlas.hpp"

@@ -46,11 +46,11 @@ bool ssrTrace(SsrRay ray, out vec2 hitPixel);
 
 float ssrNear() { return frame.cameraPos.w; }
 
+// View distance of the surface with depth-buffer sample d (infinite for sky).
+float ssrSurfaceDistanceOf(float d) { return d > 0.0 ? ssrNear() / d : 1e30; }
+
 // View distance of the surface seen at an integer pixel (infinite for sky).
-float ssrSurfaceDistance(ivec2 pix) {
-    float d = texelFetch(depthTex, pix, 0).r;
-    return d > 0.0 ? ssrNear() / d : 1e30;
-}
+float ssrSurfaceDistance(ivec2 pix) { return ssrSurfaceDistanceOf(texelFetch(depthTex, pix, 0).r); }
 
 float ssrThicknessAt(float surfaceDistance) { return ssrThickness(surfaceDistance, pc.thickness, pc.thicknessScale); }
 

@@ -82,7 +82,7 @@ bool ssrTrace(SsrRay ray, out vec2 hitPixel) {
         // A level-0 pixel whose surface the ray has reached (here or from its entry on). It reflects
         // that surface unless the ray stays further behind it than the surface is thick over the
         // rest of the pixel (and the slack): then the ray passes behind an object and goes on.
-        float s = depth > 0.0 ? ssrNear() / depth : 1e30;  // ssrSurfaceDistance(cell), from the fetch above
+        float s = ssrSurfaceDistanceOf(depth);  // the sample hizCellMin fetched
         float kNow = ray.k0 + t * dk, kOut = ray.k0 + min(tExit + slack, 1.0) * dk;
         float nearestRayDistance = 1.0 / max(kNow, kOut);  // 1/k is monotonic along the segment
         if (nearestRayDistance <= s + ssrThicknessAt(s)) {
