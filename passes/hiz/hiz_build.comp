@@ -3,6 +3,7 @@
 #include "common/bindings.glsl"
 #include "hiz/hiz.h"
 #include "hiz/hiz_level0.glsl"
+#include "ppr_common/tiles.h"
 
 // The depth hierarchy's levels 1.. (hiz.h) in one dispatch: a workgroup per coarsest cell, which the
 // padding makes whole, so no level needs a texel from another workgroup. Level 1 is the minimum of
@@ -48,7 +49,8 @@ void main() {
     ivec2 block = cell * int(1u << (kCellLevel - blockLevel)) + ivec2(hizMortonPosition(lid));  // in level blockLevel's texels
 
     ivec2 tile = block >> int(kHizTileLevel - blockLevel);  // blockLevel <= kHizTileLevel: hiz_threads >= 16
-    ivec2 tileGrid = (ivec2(frame.screenSize) + int(1u << kHizTileLevel) - 1) >> int(kHizTileLevel);
+    uvec2 screen = uvec2(frame.screenSize);
+    ivec2 tileGrid = ivec2(pprTilesCovering(screen.x), pprTilesCovering(screen.y));  // the tiles ppr.reach walked
     float v = kFineLevelsBuilt && all(lessThan(tile, tileGrid)) ? imageLoad(hizAtlas, hizLevelOrigin(padded, blockLevel) + block).r
                                                                  : hizReduceBlock(padded, block, blockLevel);
     // v is now the block's texel of blockLevel.
