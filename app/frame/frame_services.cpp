@@ -50,4 +50,8 @@ passes::TileLists TechniqueFrame::classifyTiles(uint32_t maxReflectorId) {
                                      settings.tiles.classifyThreads);
 }
 
+passes::TileLists TechniqueFrame::classifyTiles(uint32_t maxReflectorId, const passes::TileClassifyTargets& cleared) {
+    return services.tileClassify.add(graph, in, gbuffer, cleared, maxReflectorId, settings.tiles.classifyThreads);
+}
+
 }  // namespace ppr::app

@@ -77,6 +77,8 @@ struct TechniqueFrame {
     passes::HizAtlas depthHierarchy();
     // Tile lists of this frame; reflector ids above maxReflectorId do not make a tile planar.
     passes::TileLists classifyTiles(uint32_t maxReflectorId);
+    // The same with the arguments and stats cleared in the technique's batch (TileClassifyPass::queueClears).
+    passes::TileLists classifyTiles(uint32_t maxReflectorId, const passes::TileClassifyTargets& cleared);
     // What this frame's misses fall back to (--set fallback_env, env_source), bound once a frame
     // (published as EnvironmentBound); renders the reflection probe the first time it is asked for.
     passes::Environment environment();

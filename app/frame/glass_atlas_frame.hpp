@@ -49,6 +49,10 @@ public:
                   const glm::vec3& eye, VkExtent2D extent);
     // The region table's upload pass; its buffers are read by every glass consumer of the frame.
     passes::GlassRegionBuffers upload(graph::RenderGraph& g) const { return table_.add(g); }
+    // The same upload queued in a technique's batch of transfers: `uploaded` after batch.add().
+    void queueUpload(graph::RenderGraph& g, passes::TransferBatch& batch, passes::GlassRegionBuffers* uploaded) const {
+        table_.queue(g, batch, uploaded);
+    }
     // pack, then (when a pane got a region) upload: what a reference technique needs to resolve glass.
     std::optional<GlassRegionsBound> packAndUpload(graph::RenderGraph& g, uint32_t slot, const GlassSettings& settings,
                                                    const ReflectorSet& reflectors, const glm::mat4& viewProj, const glm::vec3& eye,

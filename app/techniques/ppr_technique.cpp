@@ -3,6 +3,7 @@
 #include "common/reflected_path.hpp"
 #include "hiz/hiz_pass.hpp"
 #include "ppr_clear/ppr_clear_pass.hpp"
+#include "common/transfer_batch.hpp"
 #include "ppr_common/encoding.h"
 #include "ppr_reflect/ppr_reflect.h"
 #include "ssr_hiz/ssr_hiz_pass.hpp"
@@ -42,14 +43,21 @@ std::string PprTechnique::unsupported(VkExtent2D extent) const {
     return "PPR is limited to " + std::to_string(gpu::kPprMaxExtent) + " px per side (12-bit offsets); rendering without reflections";
 }
 
-void PprTechnique::addGlass(TechniqueFrame& f, passes::PprProjectInputs& project, passes::GlassRegionBuffers& regions) const {
+void PprTechnique::queueGlass(TechniqueFrame& f, passes::TransferBatch& lists, passes::TransferBatch& clears, passes::PprProjectInputs& project,
+                              passes::GlassRegionBuffers& regions, passes::GlassReflectInputs& resolve) const {
     const FrameConstantsBuffer& constants = f.services.constants;
     const uint32_t atlasSize = f.services.glass.pack(f.slot, f.settings.glass, f.services.reflectors, constants.main().viewProj,
                                                      f.camera.position, f.in.extent);
-    regions = f.services.glass.upload(f.graph);  // the projection binds the table even without glass
+    f.services.glass.queueUpload(f.graph, lists, &regions);  // the projection binds the table even without glass
     project.glass = f.services.glass.stats(f.slot).has_value();
-    project.glassAtlas = passes::addPprClearPass(f.graph, f.in, "ppr.glass.atlas", {atlasSize, atlasSize}, "ppr.glass.clear");
-    project.glassRegions = regions.table;
+    passes::queuePprClear(f.graph, clears, "ppr.glass.atlas", {atlasSize, atlasSize}, "ppr.glass.clear", &project.glassAtlas);
+    const std::optional<GlassStats>& glass = f.services.glass.stats(f.slot);
+    if (!glass || glass->regions() == 0) return;
+    resolve.regionCount = glass->regions();
+    resolve.atlasSize = glass->atlasSize;
+    resolve.blockCount = f.services.glass.resolveBlocks();
+    resolve.flags = resolveFlags(f.settings.ppr);
+    passes::GlassReflectPass::queueClears(f.graph, clears, resolve);
 }
 
 std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f) {
@@ -58,10 +66,39 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
     const uint32_t projected = buffer.projected();
     const passes::ReflectorBinding binding{buffer.reflectors(f.slot), buffer.order(f.slot), buffer.planeLeaders(f.slot), projected,
                                            buffer.cullPlaneCount()};
-    const passes::TileLists tiles = f.classifyTiles(projected);
+    // The debug views PPR draws over the whole screen are left as they are: no fallback over them.
+    const uint32_t debug = f.settings.view.debug;
+    const bool pprDebugView = debug == gpu::kDebugIntermediate || debug == gpu::kDebugHoles || debug == gpu::kDebugTiles;
+    const bool fallbackMarches = s.fallback != PprFallback::None && !pprDebugView;
+    // With culling and indirect dispatch, the projection runs only on the tiles that can be reflected.
+    const bool reaches = s.tiles && f.settings.tiles.indirect;
+
+    // The frame's clears and uploads in two transfer passes (common/transfer_batch.hpp): "ppr.lists"
+    // first, the buffers (empty lists, zero counters, the glass table), and "ppr.clear" just before
+    // the projection, the images it and the glass resolve write (on a CPU device a cleared image
+    // is still in the cache then). The inputs below name the cleared versions once each is added.
+    passes::TransferBatch lists(f.in), clears(f.in);
+    passes::TileClassifyTargets tileTargets;
+    passes::TileClassifyPass::queueClears(f.graph, lists, f.services.stats.import(f.graph, f.slot), &tileTargets);
+    passes::PprReachInputs reach;
+    if (reaches) passes::PprReachPass::queueClears(f.graph, lists, reach);
+    passes::PprReflectInputs reflect;
+    reflect.debugView = f.settings.view.debug;
+    reflect.flags = reflectFlags(f.settings);
+    // The holes the fallback marches are normal-mapped pixels (none with normalmap=off): the
+    // reflection pass lists their tiles for it.
+    const bool marchHoles = s.fallback == PprFallback::SsrHoles && s.normalMap != NormalMap::Off && !pprDebugView;
+    reflect.listMappedHoles = marchHoles;
+    passes::PprReflectPass::queueClears(f.graph, lists, f.in.extent, reflect);
     passes::PprProjectInputs project;
+    passes::queuePprClear(f.graph, clears, "ppr.intermediate", f.in.extent, "ppr.clear", &project.intermediate);
+    passes::GlassRegionBuffers regions;
+    passes::GlassReflectInputs resolve;
+    queueGlass(f, lists, clears, project, regions, resolve);
+    lists.add(f.graph, "ppr.lists");
+
+    const passes::TileLists tiles = f.classifyTiles(projected, tileTargets);
     project.depth = f.gbuffer.depth;
-    project.intermediate = passes::addPprClearPass(f.graph, f.in, "ppr.intermediate", f.in.extent);
     const passes::PprBoundsOutputs bounds = bounds_.add(f.graph, f.in, binding, tiles.stats);
     project.bounds = bounds.bounds;
     project.visible = bounds.visible;
@@ -73,13 +110,15 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
     project.facingOnly = s.facing;
     project.splat = s.splat;
     project.threads = s.projectThreads;
-    // The debug views PPR draws over the whole screen are left as they are: no fallback over them.
-    const uint32_t debug = f.settings.view.debug;
-    const bool pprDebugView = debug == gpu::kDebugIntermediate || debug == gpu::kDebugHoles || debug == gpu::kDebugTiles;
-    const bool fallbackMarches = s.fallback != PprFallback::None && !pprDebugView;
-    // With culling and indirect dispatch, the projection runs only on the tiles that can be reflected.
-    if (s.tiles && f.settings.tiles.indirect) {
-        passes::PprReachInputs reach{project.depth, project.bounds, project.visible, project.stats, project.tilesX, project.tilesY, s.reachThreads};
+    project.glassRegions = regions.table;
+    if (reaches) {
+        reach.depth = project.depth;
+        reach.bounds = project.bounds;
+        reach.visible = project.visible;
+        reach.stats = project.stats;
+        reach.tilesX = project.tilesX;
+        reach.tilesY = project.tilesY;
+        reach.threads = s.reachThreads;
         // It reads every depth texel of each tile for the tile's box; with one invocation per tile it
         // stores the tile's levels of the depth hierarchy the fallback marches from the same reads.
         if (fallbackMarches && reach_.writesHierarchy(s.reachThreads)) reach.hierarchy = passes::HizPass::createAtlas(f.graph, f.in);
@@ -87,26 +126,19 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
         project.reach = reach_.add(f.graph, f.in, binding, reach, &hierarchyTiles);
         if (reach.hierarchy) f.board.put(DepthHierarchyTiles{hierarchyTiles});
     }
-    passes::GlassRegionBuffers regions;
-    addGlass(f, project, regions);
+    clears.add(f.graph, "ppr.clear");
     const passes::PprProjectOutputs scatter = project_.add(f.graph, f.in, binding, project);
     f.services.stats.markWritten(f.slot);
     const std::optional<GlassStats>& glass = f.services.glass.stats(f.slot);
     if (glass && glass->regions() > 0) {
-        passes::GlassReflectInputs resolve;
         resolve.atlas = scatter.glassAtlas;
         resolve.sceneColor = f.lit;
         resolve.regions = regions.table;
         resolve.regionList = regions.list;
         resolve.blockStarts = regions.blockStarts;
-        resolve.regionCount = glass->regions();
-        resolve.atlasSize = glass->atlasSize;
-        resolve.blockCount = f.services.glass.resolveBlocks();
-        resolve.flags = resolveFlags(s);
         f.board.put(passes::GlassReflection{f.services.glassReflect.add(f.graph, f.in, resolve), regions.table});
     }
 
-    passes::PprReflectInputs reflect;
     reflect.intermediate = scatter.intermediate;
     reflect.sceneColor = f.lit;
     reflect.reflectorIds = f.gbuffer.reflector;
@@ -116,18 +148,12 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
     reflect.reflectors = binding.reflectors;
     reflect.tileSurvivors = scatter.tileSurvivors;
     reflect.tiles = &tiles;
-    reflect.debugView = f.settings.view.debug;
     reflect.maxReflectorId = projected;
-    reflect.flags = reflectFlags(f.settings);
     reflect.environment = f.environment();
+    reflect.stats = scatter.stats;
     // TAA's reflection history reprojects through the virtual point, which needs each pixel's path length.
     const bool taa = f.settings.taa.enabled && f.settings.view.debug == gpu::kDebugNone;
     if (taa) reflect.distance = f.graph.createImage("ppr.distance", {f.in.extent.width, f.in.extent.height, passes::kReflectedPathFormat, 1});
-    // The holes the fallback marches are normal-mapped pixels (none with normalmap=off): the
-    // reflection pass lists their tiles for it.
-    const bool marchHoles = s.fallback == PprFallback::SsrHoles && s.normalMap != NormalMap::Off && !pprDebugView;
-    reflect.listMappedHoles = marchHoles;
-    reflect.stats = scatter.stats;
     graph::ImageHandle distance;
     std::optional<passes::TileLists> holeTiles;
     graph::ImageHandle reflection = reflect_.add(f.graph, f.in, reflect, &distance, &holeTiles);

@@ -1,8 +1,10 @@
 #pragma once
-// Pixel-projected reflections: classify tiles → clear → bounds → project (per-tile culling, glass
-// atlas) → reflect (indirect over reflector tiles) → [glass resolve] → [ssr-hiz fallback on the
-// non-planar tiles]. Reads PprSettings, TileSettings, SsrSettings (fallback) and GlassSettings.
+// Pixel-projected reflections: empty lists → classify tiles → bounds → [reach] → clear → project
+// (per-tile culling, glass atlas) → [glass resolve] → reflect (indirect over reflector tiles) →
+// [ssr-hiz fallback on the non-planar tiles]. Reads PprSettings, TileSettings, SsrSettings (fallback) and GlassSettings.
+#include "common/transfer_batch.hpp"
 #include "frame/technique.hpp"
+#include "glass_reflect/glass_reflect_pass.hpp"
 #include "ppr_bounds/ppr_bounds_pass.hpp"
 #include "ppr_project/ppr_project_pass.hpp"
 #include "ppr_reach/ppr_reach_pass.hpp"
@@ -21,7 +23,10 @@ public:
     std::string warning(const FrameServices& services) const override { return services.reflectors.budgetWarning(); }
 
 private:
-    void addGlass(TechniqueFrame& f, passes::PprProjectInputs& project, passes::GlassRegionBuffers& regions) const;
+    // Packs the frame's glass atlas and queues the region table's upload in `lists`, the atlas's clear
+    // and (with a region) the resolve's target in `clears`; fills what it can of `project` and `resolve`.
+    void queueGlass(TechniqueFrame& f, passes::TransferBatch& lists, passes::TransferBatch& clears, passes::PprProjectInputs& project,
+                    passes::GlassRegionBuffers& regions, passes::GlassReflectInputs& resolve) const;
     passes::PprProjectPass project_;
     passes::PprReflectPass reflect_;
     passes::PprBoundsPass bounds_;

@@ -4,6 +4,7 @@
 #include "clear_uint_comp.h"
 #include "common/clear.h"
 #include "common/compute_pass.hpp"
+#include "common/transfer_batch.hpp"
 
 #include <cstring>
 
@@ -23,20 +24,6 @@ bool isUnsignedIntegerFormat(VkFormat format) {
         case VK_FORMAT_R32G32B32A32_UINT: return true;
         default: return false;
     }
-}
-
-graph::ImageHandle addTransferClear(graph::RenderGraph& g, const std::string& passName, graph::ImageHandle image,
-                                    const VkClearColorValue& value) {
-    struct Data {
-        graph::ImageHandle image;
-    };
-    const Data& d = g.addPass<Data>(
-        passName, graph::QueueKind::Transfer, [&](graph::PassBuilder& b, Data& data) { data.image = b.transferDst(image); },
-        [value](const Data& data, graph::PassContext& pc) {
-            const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-            vkCmdClearColorImage(pc.cmd(), pc.image(data.image), pc.layout(data.image), &value, 1, &range);
-        });
-    return d.image;
 }
 
 }  // namespace
@@ -66,8 +53,11 @@ graph::ImageHandle ImageClear::addCompute(graph::RenderGraph& g, const std::stri
 
 graph::ImageHandle addClearPass(graph::RenderGraph& g, const FrameInputs& in, const std::string& passName, graph::ImageHandle image,
                                 const VkClearColorValue& value) {
-    if (in.computeClear && in.clear) return in.clear->addCompute(g, passName, image, value);
-    return addTransferClear(g, passName, image, value);
+    TransferBatch batch(in);
+    graph::ImageHandle cleared;
+    batch.clearImage(image, value, passName, &cleared);
+    batch.add(g, passName);
+    return cleared;
 }
 
 }  // namespace ppr::passes

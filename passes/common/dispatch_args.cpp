@@ -1,22 +1,15 @@
 #include "common/dispatch_args.hpp"
 
-#include "ppr_common/tiles.h"
+#include "common/transfer_batch.hpp"
 
 namespace ppr::passes {
 
 graph::BufferHandle addEmptyDispatchList(graph::RenderGraph& g, const std::string& passName, graph::BufferHandle buffer, bool zeroRest) {
-    struct Clear {
-        graph::BufferHandle buffer;
-    };
-    return g
-        .addPass<Clear>(
-            passName, graph::QueueKind::Transfer, [&](graph::PassBuilder& b, Clear& d) { d.buffer = b.transferDst(buffer); },
-            [zeroRest](const Clear& d, graph::PassContext& pc) {
-                const gpu::TileDispatchArgs empty{0u, 1u, 1u};
-                vkCmdUpdateBuffer(pc.cmd(), pc.buffer(d.buffer), 0, sizeof(empty), &empty);
-                if (zeroRest) vkCmdFillBuffer(pc.cmd(), pc.buffer(d.buffer), sizeof(empty), VK_WHOLE_SIZE, 0u);
-            })
-        .buffer;
+    TransferBatch batch;
+    graph::BufferHandle cleared;
+    batch.emptyDispatchList(buffer, zeroRest, &cleared);
+    batch.add(g, passName);
+    return cleared;
 }
 
 graph::BufferHandle addCountCopy(graph::RenderGraph& g, const std::string& passName, graph::BufferHandle src, VkDeviceSize srcOffset,

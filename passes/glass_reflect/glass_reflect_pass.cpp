@@ -1,6 +1,5 @@
 #include "glass_reflect/glass_reflect_pass.hpp"
 
-#include "common/clear_pass.hpp"
 #include "common/compute_pass.hpp"
 #include "glass_reflect/glass_reflect.h"
 #include "glass_atlas_view_comp.h"
@@ -26,11 +25,24 @@ graph::ImageHandle GlassReflectPass::addAtlasView(graph::RenderGraph& g, const F
     return out;
 }
 
-graph::ImageHandle GlassReflectPass::add(graph::RenderGraph& g, const FrameInputs& in, const GlassReflectInputs& inputs) const {
+void GlassReflectPass::queueClears(graph::RenderGraph& g, TransferBatch& batch, GlassReflectInputs& inputs) {
     const uint32_t size = inputs.atlasSize;
     // Texels outside the regions hold no reflection: cleared (cheap, transfer), not dispatched.
-    graph::ImageHandle target = addClearPass(g, in, "ppr.glass.reflection.clear",
-                                             g.createImage("ppr.glass.reflection", {size, size, kFormat, 1}), VkClearColorValue{});
+    batch.clearImage(g.createImage("ppr.glass.reflection", {size, size, kFormat, 1}), VkClearColorValue{}, "ppr.glass.reflection.clear",
+                     &inputs.clearedTarget.emplace());
+}
+
+graph::ImageHandle GlassReflectPass::add(graph::RenderGraph& g, const FrameInputs& in, const GlassReflectInputs& inputs) const {
+    graph::ImageHandle target;
+    if (inputs.clearedTarget) {
+        target = *inputs.clearedTarget;
+    } else {
+        TransferBatch batch(in);
+        GlassReflectInputs own = inputs;
+        queueClears(g, batch, own);
+        batch.add(g, "ppr.glass.reflection.clear");
+        target = *own.clearedTarget;
+    }
     if (inputs.blockCount == 0 || inputs.regionCount == 0) return target;
     gpu::GlassReflectPush push{};
     push.regionCount = inputs.regionCount;

@@ -2,7 +2,10 @@
 // PPR's reflection pass for the glass atlas (glass_reflect.comp): the atlas's encoded offsets → the
 // glass reflection atlas (rgba16f) that the glass forward pass samples.
 #include "common/frame_inputs.hpp"
+#include "common/transfer_batch.hpp"
 #include "graph/graph.hpp"
+
+#include <optional>
 
 namespace ppr::passes {
 
@@ -14,6 +17,9 @@ struct GlassReflectInputs {
     uint32_t atlasSize = 0;        // texels per side
     uint32_t blockCount = 0;       // GlassRegionTable::blockCount: one workgroup each; texels outside the regions keep the clear
     uint32_t flags = 0;            // ppr_reflect.h toggles (holes, filter, antibleed)
+    // The reflection atlas, cleared in a technique's batch (queueClears); unset: add() clears it in a
+    // pass of its own, "ppr.glass.reflection.clear".
+    std::optional<graph::ImageHandle> clearedTarget;
 };
 
 class GlassReflectPass {
@@ -22,6 +28,9 @@ public:
     explicit GlassReflectPass(const vk::Context& ctx);
     // Pass "ppr.glass.reflect"; returns the reflection atlas (same size as the atlas).
     graph::ImageHandle add(graph::RenderGraph& g, const FrameInputs& in, const GlassReflectInputs& inputs) const;
+    // Creates the reflection atlas (inputs.atlasSize) and queues its clear in `batch`:
+    // inputs.clearedTarget after batch.add().
+    static void queueClears(graph::RenderGraph& g, TransferBatch& batch, GlassReflectInputs& inputs);
     // --set debug=atlas: draws the reflection atlas over `color` (HDR), fitted to the screen height
     // (pass "glass.atlas_view"); returns the new version.
     graph::ImageHandle addAtlasView(graph::RenderGraph& g, const FrameInputs& in, graph::ImageHandle reflectionAtlas, graph::ImageHandle color) const;

@@ -40,25 +40,21 @@ void GlassRegionTable::fill(const scene::GlassAtlasLayout& layout) {
     blockStarts_[n] = blockCount_;
 }
 
+void GlassRegionTable::queue(graph::RenderGraph& g, TransferBatch& batch, GlassRegionBuffers* uploaded) const {
+    batch.writeBuffer(g.createBuffer("glass.regions", {table_.size() * sizeof(gpu::GlassRegionData)}), table_.data(),
+                      table_.size() * sizeof(gpu::GlassRegionData), false, &uploaded->table);
+    batch.writeBuffer(g.createBuffer("glass.region_list", {list_.size() * sizeof(uint32_t)}), list_.data(), list_.size() * sizeof(uint32_t),
+                      false, &uploaded->list);
+    batch.writeBuffer(g.createBuffer("glass.region_blocks", {blockStarts_.size() * sizeof(uint32_t)}), blockStarts_.data(),
+                      blockStarts_.size() * sizeof(uint32_t), false, &uploaded->blockStarts);
+}
+
 GlassRegionBuffers GlassRegionTable::add(graph::RenderGraph& g) const {
-    const VkDeviceSize tableBytes = table_.size() * sizeof(gpu::GlassRegionData), listBytes = list_.size() * sizeof(uint32_t);
-    const graph::BufferHandle table = g.createBuffer("glass.regions", {tableBytes});
-    const graph::BufferHandle list = g.createBuffer("glass.region_list", {listBytes});
-    const VkDeviceSize startBytes = blockStarts_.size() * sizeof(uint32_t);
-    const graph::BufferHandle starts = g.createBuffer("glass.region_blocks", {startBytes});
-    const GlassRegionBuffers& out = g.addPass<GlassRegionBuffers>(
-        "ppr.glass.regions", graph::QueueKind::Transfer,
-        [&](graph::PassBuilder& b, GlassRegionBuffers& d) {
-            d.table = b.transferDst(table);
-            d.list = b.transferDst(list);
-            d.blockStarts = b.transferDst(starts);
-        },
-        [this, tableBytes, listBytes, startBytes](const GlassRegionBuffers& d, graph::PassContext& pc) {
-            vkCmdUpdateBuffer(pc.cmd(), pc.buffer(d.table), 0, tableBytes, table_.data());
-            vkCmdUpdateBuffer(pc.cmd(), pc.buffer(d.list), 0, listBytes, list_.data());
-            vkCmdUpdateBuffer(pc.cmd(), pc.buffer(d.blockStarts), 0, startBytes, blockStarts_.data());
-        });
-    return out;
+    TransferBatch batch;
+    GlassRegionBuffers uploaded;
+    queue(g, batch, &uploaded);
+    batch.add(g, "ppr.glass.regions");
+    return uploaded;
 }
 
 }  // namespace ppr::passes

@@ -1,9 +1,10 @@
 #pragma once
 // This frame's glass atlas layout as graph buffers: GlassRegionData per reflector (glass_forward.h),
 // the list of reflectors that got a region and where each listed region's blocks of the resolve
-// start. The CPU packs the atlas; a transfer pass ("ppr.glass.regions") writes all three with
+// start. The CPU packs the atlas; a transfer pass ("ppr.glass.regions", or PPR's "ppr.clear") writes all three with
 // vkCmdUpdateBuffer, so the data travels inside the command buffer (no host-visible copies per frame
 // in flight) and every reader declares it to the graph.
+#include "common/transfer_batch.hpp"
 #include "glass_forward/glass_forward.h"
 #include "graph/graph.hpp"
 #include "scene/glass_atlas.hpp"
@@ -31,6 +32,8 @@ public:
     void fill(const scene::GlassAtlasLayout& layout);
     // Adds the upload pass; the data must stay untouched until the frame is recorded.
     GlassRegionBuffers add(graph::RenderGraph& g) const;
+    // The same upload queued in a technique's batch: `uploaded` after batch.add().
+    void queue(graph::RenderGraph& g, TransferBatch& batch, GlassRegionBuffers* uploaded) const;
 
     // The region of one panel as the shaders see it.
     static gpu::GlassRegionData pack(const scene::GlassRegion& region);

@@ -1,7 +1,6 @@
 #include "ppr_reach/ppr_reach_pass.hpp"
 
 #include "common/compute_pass.hpp"
-#include "common/dispatch_args.hpp"
 #include "common/tile_group_grid.hpp"
 #include "hiz/hiz.h"
 #include "ppr_common/tiles.h"
@@ -34,10 +33,23 @@ PprReachPass::PprReachPass(const vk::Context& ctx)
 
 uint32_t PprReachPass::autoThreads(const vk::DeviceInfo& device) { return kWidths.defaultFor(device); }
 
+void PprReachPass::queueClears(graph::RenderGraph& g, TransferBatch& batch, PprReachInputs& inputs) {
+    batch.emptyDispatchList(g.createBuffer("ppr.reach.args", {sizeof(gpu::TileDispatchArgs)}), false, &inputs.clearedArgs.emplace());
+}
+
 PprTileList PprReachPass::add(graph::RenderGraph& g, const FrameInputs& in, const ReflectorBinding& r, const PprReachInputs& inputs,
                               graph::ImageHandle* hierarchyWritten) const {
     const uint32_t tileCount = inputs.tilesX * inputs.tilesY;
-    const graph::BufferHandle clearedArgs = addEmptyDispatchList(g, "ppr.reach.clear", g.createBuffer("ppr.reach.args", {sizeof(gpu::TileDispatchArgs)}));
+    graph::BufferHandle clearedArgs;
+    if (inputs.clearedArgs) {
+        clearedArgs = *inputs.clearedArgs;
+    } else {
+        TransferBatch batch;
+        PprReachInputs own;
+        queueClears(g, batch, own);
+        batch.add(g, "ppr.reach.clear");
+        clearedArgs = *own.clearedArgs;
+    }
 
     gpu::PprReachPush push{};
     push.reflectorCount = r.count;

@@ -20,6 +20,25 @@ PprReflectPass::PprReflectPass(const vk::Context& ctx) : ctx_(ctx) {
     pipeline_ = shader::createComputePipeline(ctx, PPR_SPIRV(ppr_reflect_comp), layout, "ppr.reflect");
 }
 
+namespace {
+// Whether the pass dispatches over the planar tiles: the debug views that draw outside reflector
+// pixels need the whole screen.
+bool dispatchesIndirect(const PprReflectInputs& inputs) {
+    return (inputs.flags & gpu::kPprIndirect) != 0 && inputs.debugView != gpu::kDebugIntermediate && inputs.debugView != gpu::kDebugTiles;
+}
+
+graph::BufferHandle createHoleState(graph::RenderGraph& g, uint32_t tileCount) {
+    return g.createBuffer("ppr.holes.state", {sizeof(gpu::TileDispatchArgs) + sizeof(uint32_t) * tileCount});
+}
+}  // namespace
+
+void PprReflectPass::queueClears(graph::RenderGraph& g, TransferBatch& batch, VkExtent2D extent, PprReflectInputs& inputs) {
+    if (inputs.listMappedHoles && dispatchesIndirect(inputs) && !inputs.clearedHoles)
+        // The list empty and no planar-list slot listed yet.
+        batch.emptyDispatchList(createHoleState(g, gpu::pprTilesCovering(extent.width) * gpu::pprTilesCovering(extent.height)), true,
+                                &inputs.clearedHoles.emplace());
+}
+
 graph::ImageHandle PprReflectPass::add(graph::RenderGraph& g, const FrameInputs& in, const PprReflectInputs& inputs,
                                        graph::ImageHandle* distanceOut, std::optional<TileLists>* mappedHolesOut) const {
     gpu::PprReflectPush push{};
@@ -28,9 +47,8 @@ graph::ImageHandle PprReflectPass::add(graph::RenderGraph& g, const FrameInputs&
     push.tilesX = inputs.tiles->tilesX;
     push.maxReflectorId = inputs.maxReflectorId;
     if ((push.flags & gpu::kPprEnvironment) && inputs.environment.probe) push.flags |= gpu::kPprEnvironmentProbe;
-    // The debug views that draw outside reflector pixels need the whole screen.
-    if (inputs.debugView == gpu::kDebugIntermediate || inputs.debugView == gpu::kDebugTiles) push.flags &= ~gpu::kPprIndirect;
-    const bool indirect = (push.flags & gpu::kPprIndirect) != 0;
+    const bool indirect = dispatchesIndirect(inputs);
+    if (!indirect) push.flags &= ~gpu::kPprIndirect;
 
     graph::ImageHandle target = g.createImage("reflection", {in.extent.width, in.extent.height, kReflectionFormat, 1});
     // Tiles left out of the indirect dispatch hold no reflector pixel: "no reflection" (all zero),
@@ -68,9 +86,9 @@ graph::ImageHandle PprReflectPass::add(graph::RenderGraph& g, const FrameInputs&
     if (listHoles) {
         push.flags |= gpu::kPprListMappedHoles;
         holes = *inputs.tiles;
-        // The list empty and no planar-list slot listed yet.
-        const graph::BufferHandle state = addEmptyDispatchList(
-            g, "ppr.holes.clear", g.createBuffer("ppr.holes.state", {sizeof(gpu::TileDispatchArgs) + sizeof(uint32_t) * holes.tileCount()}), true);
+        // The list empty and no planar-list slot listed yet (queueClears).
+        const graph::BufferHandle state =
+            inputs.clearedHoles ? *inputs.clearedHoles : addEmptyDispatchList(g, "ppr.holes.clear", createHoleState(g, holes.tileCount()), true);
         pass.storageReadWrite(state, &holes.args).storageWrite(g.createBuffer("ppr.holes.tiles", {sizeof(uint32_t) * holes.tileCount()}), &holes.lists);
     } else {
         pass.storageWrite(g.createBuffer("ppr.holes.state.unused", {16}), nullptr).storageWrite(g.createBuffer("ppr.holes.tiles.unused", {16}), nullptr);

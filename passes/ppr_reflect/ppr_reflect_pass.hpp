@@ -2,6 +2,7 @@
 // PPR reflection pass (ppr_reflect.comp): intermediate buffer + lit scene → reflection image.
 #include "common/environment.hpp"
 #include "common/frame_inputs.hpp"
+#include "common/transfer_batch.hpp"
 #include "graph/graph.hpp"
 
 #include <optional>
@@ -30,6 +31,9 @@ struct PprReflectInputs {
     // (kPprListMappedHoles); add() returns the list in `mappedHolesOut`.
     bool listMappedHoles = false;
     graph::BufferHandle stats;  // PprFrameStats (with the list: tilesWithMappedHoles copied in)
+    // The mapped holes' list state, cleared in a technique's batch (PprReflectPass::queueClears);
+    // unset: add() clears it in a pass of its own, "ppr.holes.clear".
+    std::optional<graph::BufferHandle> clearedHoles;
 };
 
 class PprReflectPass {
@@ -41,6 +45,9 @@ public:
     // TileLists (arguments and list at class 0), for SsrTracePass::addFallback; untouched otherwise.
     graph::ImageHandle add(graph::RenderGraph& g, const FrameInputs& in, const PprReflectInputs& inputs,
                            graph::ImageHandle* distanceOut = nullptr, std::optional<TileLists>* mappedHolesOut = nullptr) const;
+    // Queues in `batch` the clear of the mapped holes' list state add() would make for these inputs on
+    // an `extent` screen, if any: inputs.clearedHoles after batch.add().
+    static void queueClears(graph::RenderGraph& g, TransferBatch& batch, VkExtent2D extent, PprReflectInputs& inputs);
 
 private:
     const vk::Context& ctx_;

@@ -3,6 +3,7 @@
 #include "common/compute_pass.hpp"
 #include "common/dispatch_args.hpp"
 #include "common/tile_group_grid.hpp"
+#include "common/transfer_batch.hpp"
 #include "ppr_common/tiles.h"
 #include "tile_classify/tile_classify.h"
 #include "tile_classify_comp.h"
@@ -31,30 +32,32 @@ TileClassifyPass::TileClassifyPass(const vk::Context& ctx)
 
 uint32_t TileClassifyPass::autoThreads(const vk::DeviceInfo& device) { return kWidths.defaultFor(device); }
 
+void TileClassifyPass::queueClears(graph::RenderGraph& g, TransferBatch& batch, graph::BufferHandle stats, TileClassifyTargets* cleared) {
+    // Empty lists (x = 0, y = z = 1) and zero counters.
+    static constexpr std::array<gpu::TileDispatchArgs, gpu::kTileClassCount> kEmpty = [] {
+        std::array<gpu::TileDispatchArgs, gpu::kTileClassCount> empty{};
+        for (gpu::TileDispatchArgs& a : empty) a = {0u, 1u, 1u};
+        return empty;
+    }();
+    batch.writeBuffer(g.createBuffer("tiles.args", {sizeof(kEmpty)}), kEmpty.data(), sizeof(kEmpty), false, &cleared->args);
+    batch.writeBuffer(stats, nullptr, 0, true, &cleared->stats);
+}
+
 TileLists TileClassifyPass::add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::BufferHandle stats,
+                                uint32_t maxReflectorId, uint32_t threads) const {
+    TransferBatch batch;
+    TileClassifyTargets cleared;
+    queueClears(g, batch, stats, &cleared);
+    batch.add(g, "tiles.clear");
+    return add(g, in, gb, cleared, maxReflectorId, threads);
+}
+
+TileLists TileClassifyPass::add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, const TileClassifyTargets& cleared,
                                 uint32_t maxReflectorId, uint32_t threads) const {
     TileLists t;
     t.tilesX = gpu::pprTilesCovering(in.extent.width);
     t.tilesY = gpu::pprTilesCovering(in.extent.height);
-    graph::BufferHandle args = g.createBuffer("tiles.args", {sizeof(gpu::TileDispatchArgs) * gpu::kTileClassCount});
     graph::BufferHandle lists = g.createBuffer("tiles.lists", {sizeof(uint32_t) * gpu::kTileClassCount * t.tileCount()});
-
-    // Empty lists (x = 0, y = z = 1) and zero counters; vkCmdUpdateBuffer/FillBuffer are transfer commands.
-    struct Clear {
-        graph::BufferHandle args, stats;
-    };
-    const Clear& cleared = g.addPass<Clear>(
-        "tiles.clear", graph::QueueKind::Transfer,
-        [&](graph::PassBuilder& b, Clear& d) {
-            d.args = b.transferDst(args);
-            d.stats = b.transferDst(stats);
-        },
-        [](const Clear& d, graph::PassContext& pc) {
-            std::array<gpu::TileDispatchArgs, gpu::kTileClassCount> empty{};
-            for (gpu::TileDispatchArgs& a : empty) a = {0u, 1u, 1u};
-            vkCmdUpdateBuffer(pc.cmd(), pc.buffer(d.args), 0, sizeof(empty), empty.data());
-            vkCmdFillBuffer(pc.cmd(), pc.buffer(d.stats), 0, VK_WHOLE_SIZE, 0u);
-        });
     const graph::BufferHandle clearedArgs = cleared.args, clearedStats = cleared.stats;
 
     gpu::TileClassifyPush push{};

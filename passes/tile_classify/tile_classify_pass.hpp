@@ -2,6 +2,7 @@
 // Tile classification (tile_classify.comp): per-class tile lists and their indirect dispatch
 // arguments, all graph buffers, plus the frame's tile counts in the stats buffer.
 #include "common/frame_inputs.hpp"
+#include "common/transfer_batch.hpp"
 #include "common/workgroup_widths.hpp"
 #include "gbuffer/gbuffer_pass.hpp"
 #include "graph/graph.hpp"
@@ -17,6 +18,12 @@ struct TileLists {
     uint32_t tileCount() const { return tilesX * tilesY; }
 };
 
+// The arguments and the stats, cleared (TileClassifyPass::queueClears).
+struct TileClassifyTargets {
+    graph::BufferHandle args;   // TileDispatchArgs[kTileClassCount], every list empty
+    graph::BufferHandle stats;  // PprFrameStats, zero
+};
+
 class TileClassifyPass {
 public:
     explicit TileClassifyPass(const vk::Context& ctx);
@@ -26,6 +33,11 @@ public:
     // invocations per tile, one of kClassifyThreadChoices, or 0 for the device's default.
     TileLists add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, graph::BufferHandle stats, uint32_t maxReflectorId,
                   uint32_t threads) const;
+    // The same with the clears queued in a technique's batch (queueClears; "tiles.clear" is not added).
+    TileLists add(graph::RenderGraph& g, const FrameInputs& in, const GBuffer& gb, const TileClassifyTargets& cleared,
+                  uint32_t maxReflectorId, uint32_t threads) const;
+    // Creates the arguments and queues their clear and the stats' in `batch`: `cleared` after batch.add().
+    static void queueClears(graph::RenderGraph& g, TransferBatch& batch, graph::BufferHandle stats, TileClassifyTargets* cleared);
     // What threads = 0 means on this device: kTileClassifyThreads on a CPU, kTileClassifyThreadsGpu elsewhere.
     static uint32_t autoThreads(const vk::DeviceInfo& device);
 

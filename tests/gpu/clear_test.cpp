@@ -2,9 +2,11 @@
 // technique (TAA's distance image and the glass atlas included), and each builds the pass kind it
 // names. Validation + synchronization validation on throughout.
 #include "common/clear_pass.hpp"
+#include "common/transfer_batch.hpp"
 #include "gpu_test_util.hpp"
 #include "techniques/technique_table.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 namespace ppr::test {
@@ -74,6 +76,79 @@ TEST(ImageClear, BuildsAComputePassOnlyWhenAsked) {
         }
     EXPECT_TRUE(passes::ImageClear::computeIsCheaper({.type = "discrete"}));
     EXPECT_FALSE(passes::ImageClear::computeIsCheaper({.type = "cpu"}));
+}
+
+// A batch records its image clears and buffer writes as one transfer pass, or with compute clears
+// each image as a compute pass of the name it was given; every handle it hands out is the written
+// version (a pass reading them all compiles, and the batch's pass is not culled).
+TEST(TransferBatch, OnePassForEverythingQueued) {
+    GpuFixture f;
+    const passes::ImageClear clear(*f.ctx);
+    for (const bool compute : {false, true}) {
+        graph::RenderGraph g;
+        passes::FrameInputs in;
+        in.clear = &clear;
+        in.computeClear = compute;
+        passes::TransferBatch batch(in);
+        graph::ImageHandle a, b;
+        graph::BufferHandle list, table;
+        const uint32_t data[3] = {7u, 8u, 9u};
+        batch.clearImage(g.createImage("a", {64, 32, VK_FORMAT_R16G16B16A16_SFLOAT, 1}), VkClearColorValue{}, "a.clear", &a);
+        batch.emptyDispatchList(g.createBuffer("list", {64}), true, &list);
+        batch.clearImage(g.createImage("b", {16, 16, VK_FORMAT_R32_UINT, 1}), VkClearColorValue{}, "b.clear", &b);
+        batch.writeBuffer(g.createBuffer("table", {sizeof(data)}), data, sizeof(data), false, &table);
+        batch.add(g, "batch");
+        struct Reader {};
+        g.addPass<Reader>(
+            "reader", graph::QueueKind::Compute,
+            [&](graph::PassBuilder& pb, Reader&) {
+                pb.storageRead(a);
+                pb.storageRead(b);
+                pb.storageRead(list);
+                pb.storageRead(table);
+                pb.sideEffect();
+            },
+            [](const Reader&, graph::PassContext&) {});
+        ASSERT_NO_THROW(g.compile());
+        std::vector<std::string> names;
+        for (const graph::CompiledPass& p : g.compiledPasses())
+            if (!p.culled) names.push_back(p.name + (p.kind == graph::QueueKind::Transfer ? ":transfer" : ":compute"));
+        const std::vector<std::string> expected = compute ? std::vector<std::string>{"a.clear:compute", "b.clear:compute", "batch:transfer", "reader:compute"}
+                                                          : std::vector<std::string>{"batch:transfer", "reader:compute"};
+        EXPECT_EQ(names, expected) << "compute=" << compute;
+    }
+    // vkCmdUpdateBuffer's limits are checked when queueing.
+    graph::RenderGraph g;
+    passes::TransferBatch batch;
+    graph::BufferHandle out;
+    const uint32_t three[3] = {};
+    EXPECT_THROW(batch.writeBuffer(g.createBuffer("odd", {16}), three, 6, false, &out), std::logic_error);
+    EXPECT_THROW(batch.writeBuffer(g.createBuffer("huge", {70000}), three, 65540, false, &out), std::logic_error);
+}
+
+// PPR's frame clears and uploads everything in two transfer passes, "ppr.lists" (buffers, first) and
+// "ppr.clear" (images, just before the projection): the passes each clear used to have are gone (the
+// reflection's clear stays: the bench counts it with the indirect dispatch; so does TAA's distance).
+TEST(TransferBatch, PprClearsInOnePass) {
+    GpuFixture f;
+    f.headless->setTechnique("ppr");
+    f.headless->settings().set("clear", "transfer");
+    f.headless->settings().set("taa", "1");
+    const app::CaptureResult frame = f.headless->capture(f.camera("glass"), kSize, 2, false, true);
+    const std::vector<std::string>& passes = frame.passOrder;
+    const auto has = [&](const char* name) { return std::find(passes.begin(), passes.end(), name) != passes.end(); };
+    EXPECT_TRUE(has("ppr.lists"));
+    EXPECT_TRUE(has("ppr.clear"));
+    EXPECT_TRUE(has("ppr.glass.reflect")) << "the glass camera resolves panes";
+    EXPECT_TRUE(has("ppr.reflection.clear"));
+    for (const char* gone : {"tiles.clear", "ppr.reach.clear", "ppr.holes.clear", "ppr.glass.clear", "ppr.glass.regions",
+                             "ppr.glass.reflection.clear"})
+        EXPECT_FALSE(has(gone)) << gone;
+    const auto at = [&](const char* name) { return std::find(passes.begin(), passes.end(), name) - passes.begin(); };
+    EXPECT_LT(at("ppr.lists"), at("tiles.classify"));
+    EXPECT_LT(at("ppr.reach"), at("ppr.clear"));
+    EXPECT_LT(at("ppr.clear"), at("ppr.project"));
+    EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
 
 }  // namespace
