@@ -45,6 +45,7 @@ struct SsrSettings {         // owner: ssr (the four ssr-* techniques and PPR's 
     float distance, thickness, thicknessScale;
     uint32_t steps;
     uint32_t hizThreads;     // the depth hierarchy build's invocations per cell (passes/hiz/hiz_threads.hpp); 0: auto
+    bool hizSkip;            // ssr-hiz's march crosses an 8x8 cell it stays behind in one step
 };
 struct GlassSettings {       // owner: glass (PPR's glass atlas and the planar reference's)
     bool enabled;

@@ -187,6 +187,9 @@ const std::vector<SettingDecl>& settingDecls() {
                "SSR: thickness added per metre of view distance"),
         integer("ssr_steps", "ssr", [](FrameSettings& s) -> uint32_t& { return s.ssr.steps; }, 4096, 1, 65536,
                 "SSR: most march iterations per ray (the default never cuts a ray short on screen)"),
+        toggle("hiz_skip", "ssr", [](FrameSettings& s) -> bool& { return s.ssr.hizSkip; }, true,
+               "ssr-hiz and PPR's fallback: where the ray walks behind an object pixel by pixel, cross an 8x8 cell whose "
+               "farthest surface it stays behind (by more than the thickness) in one step; the same reflections (0: walk)"),
         widthSetting("hiz_threads", "ssr", [](FrameSettings& s) -> uint32_t& { return s.ssr.hizThreads; }, passes::kHizThreadChoices,
                      "depth hierarchy build (ssr-hiz, PPR's fallback): invocations per 64x64 cell, one dispatch for every level "
                      "(auto: 16 on a CPU device, 256 on a GPU); the same hierarchy with any"),

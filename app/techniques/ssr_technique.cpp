@@ -12,6 +12,7 @@ passes::SsrInputs ssrInputs(TechniqueFrame& f, const passes::TileLists& tiles) {
     s.params.thickness = f.settings.ssr.thickness;
     s.params.thicknessScale = f.settings.ssr.thicknessScale;
     s.params.maxSteps = f.settings.ssr.steps;
+    s.params.hizSkip = f.settings.ssr.hizSkip;
     s.indirect = f.settings.tiles.indirect;
     s.mappedNormals = f.settings.ppr.normalMap != NormalMap::Off;
     s.environment = f.environment();

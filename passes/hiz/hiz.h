@@ -9,7 +9,7 @@
 // in a column from its top-left corner. The screen is padded up to a multiple of the coarsest cell so
 // every level is exactly half the one below: level L's texel c covers level-0 texels
 // [c·2^L, (c+1)·2^L), with no partial cells at the edges. Level-0 texels beyond the screen (padding)
-// hold 1 (nothing there).
+// hold 1 (nothing there). Beside level 2 lie the far values of the 8x8 cells (kHizFarLevel).
 #ifndef PPR_HIZ_H
 #define PPR_HIZ_H
 #include "shader/shared.h"
@@ -20,6 +20,14 @@ PPR_CONST(float, kHizEmpty, 1.0f)      // sky and padding
 // the tile for its box, stores on the way when a fallback will march the hierarchy (ppr_reach.comp);
 // the build then only adds the levels above (hiz_build.comp, kFineLevelsBuilt).
 PPR_CONST(uint, kHizTileLevel, 4u)
+// The farthest surface of each 8x8 cell (level kHizFarLevel's texels): the least reverse-Z depth over
+// the cell's pixels on screen (0 where one of them is sky, kHizFarNone where none is on screen),
+// stored in the atlas beside level 2, which leaves that space free (hizFarOrigin). Where the march
+// walks level-0 pixels behind an object, a cell whose farthest surface the ray stays behind by more
+// than the thickness cannot be hit anywhere on the ray's way through it: it crosses the cell in one
+// step (ssr_hiz.comp, --set hiz_skip). Written by whoever writes the cell's level 3 near values.
+PPR_CONST(uint, kHizFarLevel, 3u)
+PPR_CONST(float, kHizFarNone, 1.0f)
 // The build is one dispatch, a workgroup per coarsest cell (hiz_build.comp). Its invocations each
 // reduce a square block of the cell alone, up to the block's one texel, and the group reduces those,
 // a level per barrier: --set hiz_threads (specialization constant 0; 16, 64 or 256 invocations:
@@ -40,6 +48,9 @@ PPR_INLINE uvec2 hizLevelSize(uvec2 padded, uint level) { return uvec2(padded.x 
 // padded.y/4, ... sum to padded.y − padded.y/2^(level−1) exactly (padded.y is a multiple of the
 // coarsest cell). Closed form, not a loop: the march calls it at every change of level.
 PPR_INLINE ivec2 hizLevelOrigin(uvec2 padded, uint level) { return ivec2(0, int(padded.y - (padded.y >> (level - 1u)))); }
+// Top-left texel of the far values (kHizFarLevel): right of level 2, which is a quarter of the padded
+// width wide, in the rows of level 2.
+PPR_INLINE ivec2 hizFarOrigin(uvec2 padded) { return ivec2(int(padded.x / 4u), int(padded.y / 2u)); }
 // Levels 1.. stacked: half the padded width, and heights that sum to less than the padded height.
 PPR_INLINE uvec2 hizAtlasSize(uvec2 padded) { return uvec2(padded.x / 2u, padded.y); }
 // Level-0 value of a depth-buffer sample (reverse-Z, 0 = sky).

@@ -27,16 +27,26 @@ layout(set = 0, binding = 2, r32f) uniform image2D hizAtlas;
 
 const uint kCellLevel = kHizLevels - 1u;  // the cell is one texel of the coarsest level
 shared float reduced[2][kThreads];        // ping-pong: a level's texels, read while the next is written
+shared float blockFar[kThreads];          // with blocks of level 2: their far values (hiz.h kHizFarLevel)
 
-float hizQuad(ivec2 c) {
+float hizQuad(ivec2 c, inout float far) {
     ivec2 p = 2 * c;
     if (all(lessThan(p + 1, ivec2(frame.screenSize)))) {
         // The whole quad on screen: one gather (the sample point is the quad's shared corner).
         vec4 d = textureGather(depthTex, vec2(p + 1) * frame.invScreenSize, 0);
+        far = min(far, min(min(d.x, d.y), min(d.z, d.w)));
         return min(min(hizFromReverseZ(d.x), hizFromReverseZ(d.y)), min(hizFromReverseZ(d.z), hizFromReverseZ(d.w)));
     }
-    return min(min(hizLevel0(depthTex, p), hizLevel0(depthTex, p + ivec2(1, 0))),
-               min(hizLevel0(depthTex, p + ivec2(0, 1)), hizLevel0(depthTex, p + ivec2(1, 1))));
+    // At the screen's edge: texel by texel, the padding empty and not counted in the far value.
+    float v = kHizEmpty;
+    for (int k = 0; k < 4; ++k) {
+        ivec2 q = p + ivec2(k & 1, k >> 1);
+        if (any(greaterThanEqual(q, ivec2(frame.screenSize)))) continue;
+        float depth = texelFetch(depthTex, q, 0).r;
+        far = min(far, depth);
+        v = min(v, hizFromReverseZ(depth));
+    }
+    return v;
 }
 #include "hiz/hiz_block.glsl"
 
@@ -51,10 +61,12 @@ void main() {
     ivec2 tile = block >> int(kHizTileLevel - blockLevel);  // blockLevel <= kHizTileLevel: hiz_threads >= 16
     uvec2 screen = uvec2(frame.screenSize);
     ivec2 tileGrid = ivec2(pprTilesCovering(screen.x), pprTilesCovering(screen.y));  // the tiles ppr.reach walked
-    float v = kFineLevelsBuilt && all(lessThan(tile, tileGrid)) ? imageLoad(hizAtlas, hizLevelOrigin(padded, blockLevel) + block).r
-                                                                 : hizReduceBlock(padded, block, blockLevel);
+    bool builtByReach = kFineLevelsBuilt && all(lessThan(tile, tileGrid));  // the far values in it too
+    float far = kHizFarNone;
+    float v = builtByReach ? imageLoad(hizAtlas, hizLevelOrigin(padded, blockLevel) + block).r : hizReduceBlock(padded, block, blockLevel, far);
     // v is now the block's texel of blockLevel.
     reduced[0][lid] = v;
+    if (blockLevel < kHizFarLevel) blockFar[lid] = far;
     uint count = kThreads, from = 0u;
     for (uint level = blockLevel + 1u; level <= kCellLevel; ++level) {
         barrier();
@@ -62,7 +74,12 @@ void main() {
         if (lid < count) {
             v = min(min(reduced[from][4u * lid], reduced[from][4u * lid + 1u]), min(reduced[from][4u * lid + 2u], reduced[from][4u * lid + 3u]));
             reduced[1u - from][lid] = v;
-            hizStore(padded, level, cell * int(1u << (kCellLevel - level)) + ivec2(hizMortonPosition(lid)), v);
+            ivec2 texel = cell * int(1u << (kCellLevel - level)) + ivec2(hizMortonPosition(lid));
+            hizStore(padded, level, texel, v);
+            // Blocks of level 2: the level-3 texels' far values from theirs (a level-3 texel lies in one
+            // PPR tile, so its blocks were all walked or all stored by the reach pass).
+            if (level == kHizFarLevel && !(kFineLevelsBuilt && all(lessThan(texel >> int(kHizTileLevel - level), tileGrid))))
+                hizStoreFar(padded, texel, min(min(blockFar[4u * lid], blockFar[4u * lid + 1u]), min(blockFar[4u * lid + 2u], blockFar[4u * lid + 3u])));
         }
         from = 1u - from;
     }

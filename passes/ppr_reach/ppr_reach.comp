@@ -52,8 +52,9 @@ uvec3 boxLo = uvec3(0xFFFFFFFFu), boxHi = uvec3(0u);
 // The points of the 2x2 pixel quad whose top-left pixel is `quad`, added to the box, from the
 // positions the projection pass reconstructs (it culls with this box, listed with the tile below,
 // and does not reduce its own). One gather; its order: (0,1), (1,1), (1,0), (0,0). Returns the
-// quad's texel of the depth hierarchy's level 1: the min of 1 − depth over it, empty beyond the screen.
-float addQuad(ivec2 quad) {
+// quad's texel of the depth hierarchy's level 1: the min of 1 − depth over it, empty beyond the screen;
+// `far` is min-ed with its least depth on screen (hiz.h kHizFarLevel).
+float addQuad(ivec2 quad, inout float far) {
     if (any(greaterThanEqual(quad, ivec2(frame.screenSize)))) return kHizEmpty;
     const ivec2 corners[4] = ivec2[4](ivec2(0, 1), ivec2(1, 1), ivec2(1, 0), ivec2(0, 0));
     vec4 depths = textureGather(depthTex, vec2(quad + 1) * frame.invScreenSize, 0);
@@ -62,6 +63,7 @@ float addQuad(ivec2 quad) {
         ivec2 pix = quad + corners[c];
         if (any(greaterThanEqual(pix, ivec2(frame.screenSize)))) continue;  // the clamped gather repeats the edge
         nearest = min(nearest, hizFromReverseZ(depths[c]));
+        far = min(far, depths[c]);
         if (depths[c] <= 0.0) continue;  // sky
         uvec3 ordered = orderedFromFloat(worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depths[c]));
         boxLo = min(boxLo, ordered);
@@ -70,7 +72,7 @@ float addQuad(ivec2 quad) {
     return nearest;
 }
 
-float hizQuad(ivec2 texel) { return addQuad(2 * texel); }
+float hizQuad(ivec2 texel, inout float far) { return addQuad(2 * texel, far); }
 #include "hiz/hiz_block.glsl"
 
 void gatherPlaneRectangles() {
@@ -160,11 +162,13 @@ void main() {
     // The box of the tile's points (addQuad), each lane from its share of the tile's 2x2 quads.
     if (inside) {
         if (kWritesHierarchy && kLanes == 1u) {  // specialization constants: uniform
-            hizReduceBlock(hizPaddedSize(uvec2(frame.screenSize)), ivec2(tile), kHizTileLevel);
+            float far;
+            hizReduceBlock(hizPaddedSize(uvec2(frame.screenSize)), ivec2(tile), kHizTileLevel, far);
         } else {
             const uint quadsPerRow = kPprTileSize / 2u;
+            float far = kHizFarNone;  // unused without the hierarchy
             for (uint k = lane; k < quadsPerRow * quadsPerRow; k += kLanes)
-                addQuad(ivec2(tile) * int(kPprTileSize) + 2 * ivec2(k % quadsPerRow, k / quadsPerRow));
+                addQuad(ivec2(tile) * int(kPprTileSize) + 2 * ivec2(k % quadsPerRow, k / quadsPerRow), far);
         }
         if (boxLo.x <= boxHi.x) {
             atomicMin(tileLo[slot].x, boxLo.x);

@@ -22,6 +22,9 @@ PPR_CONST(uint, kSsrWriteDistance, 32u)  // write each shaded pixel's reflected 
 // environment standing in for one) and the mapped normal leaves the plane: PPR's holes on
 // normal-mapped reflectors (--set fallback=ssr_holes).
 PPR_CONST(uint, kSsrHolesOnly, 64u)
+// ssr-hiz (and PPR's fallback): behind an object, cross an 8x8 cell whose farthest surface the ray
+// stays behind in one step instead of pixel by pixel (hiz/hiz.h kHizFarLevel; --set hiz_skip).
+PPR_CONST(uint, kSsrHizSkip, 128u)
 // Pixel classes shaded (SsrPush::pixelClasses): bit kTileClassPlanar = reflector-rectangle pixels,
 // bit kTileClassOther = reflective pixels no rectangle covers (rough or curved surfaces).
 

@@ -37,6 +37,7 @@ graph::ImageHandle SsrTracePass::trace(graph::RenderGraph& g, const FrameInputs&
     if (inputs.environment.fallback) push.flags |= gpu::kSsrEnvironment;
     if (inputs.environment.probe) push.flags |= gpu::kSsrEnvironmentProbe;
     if (distance) push.flags |= gpu::kSsrWriteDistance;
+    if (inputs.params.hizSkip) push.flags |= gpu::kSsrHizSkip;
     const GBuffer& gb = *inputs.gbuffer;
     const VkSampler point = in.samplers->nearestClamp;
     graph::ImageHandle out;

@@ -18,6 +18,7 @@ namespace ppr::passes {
 struct SsrParams {
     float maxDistance = 0.0f, thickness = 0.0f, thicknessScale = 0.0f;
     uint32_t maxSteps = 0;
+    bool hizSkip = false;  // --set hiz_skip (ssr-hiz's march)
 };
 
 struct SsrInputs {

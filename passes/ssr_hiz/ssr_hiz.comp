@@ -10,7 +10,8 @@
 // whose nearest surface lies behind the ray cannot be hit anywhere inside, so the ray crosses it in
 // one step and tries the next coarser level; where the ray reaches a cell's nearest surface it looks
 // one level finer. Only level-0 pixels are tested against the surface, with the same thickness rule
-// as ssr-brute.
+// as ssr-brute. Behind an object the ray walks level-0 pixels; with hiz_skip it crosses an 8x8 cell
+// it stays behind in one step where the walk would pass every pixel (hizSkipBehind).
 //
 // Along the segment the hierarchy's depth d = 1 − near·k is affine in the fraction t, as are the
 // pixel coordinates, so both the cell exits and the point where the ray reaches a depth are one
@@ -24,6 +25,50 @@ float hizCellMin(int level, ivec2 origin, ivec2 cell, out float depth) {
     if (level != 0) return imageLoad(hizAtlas, origin + cell).r;
     depth = hizLevel0Depth(depthTex, cell);
     return hizFromReverseZ(depth);
+}
+
+// Rounding allowances of hizSkipBehind's tests, which repeat the walk's arithmetic at the ends of
+// the cell rather than at each pixel: a compiler may fuse a multiply-add in one place and not in the
+// other, so each test keeps this far on the safe side.
+const float kHizSkipDepthMargin = 1e-6;     // hierarchy depth (0..1)
+const float kHizSkipDistanceMargin = 1e-5;  // relative, view distance
+
+// hiz_skip: the ray has just passed behind the level-0 pixel at cellF (leaving it at tExit) and would
+// walk on pixel by pixel. If up to the exit of the 8x8 cell around that pixel (hiz.h kHizFarLevel) it
+// stays behind every pixel of the cell, and farther behind each than its surface is thick (the cell's
+// farthest surface, the least depth in it, bounds both: the walk's tests are monotone in the depth,
+// and the ray's depth and 1/distance are monotone along it, so their worst values are at the ends),
+// the walk would cross the rest of the cell without a hit and stop at its exit, at level 0 (the exit
+// is the same float either way: both come from the same integer edge). Returns that exit, or tExit
+// where the walk could go otherwise: a test fails, or the ray leaves the cell so close to a pixel line
+// of the other axis that the walk's nudged lookups (kSsrCrossEps) could leave it a pixel early.
+float hizSkipBehind(SsrSegment seg, SsrRay ray, vec2 cellF, float tExit, float d0, float dd, float slack, uvec2 padded) {
+    const float farCellSize = float(1u << kHizFarLevel);
+    vec2 farCellF = floor(cellF / farCellSize);  // = ssrCellAt(seg, t, farCellSize): exact scaling, same floor
+    float tCell = ssrCellExit(seg, farCellF, farCellSize);
+    if (!(tCell > tExit)) return tExit;
+    ivec2 farCell = clamp(ivec2(farCellF), ivec2(0), ivec2(hizLevelSize(padded, kHizFarLevel)) - 1);
+    float farDepth = imageLoad(hizAtlas, hizFarOrigin(padded) + farCell).r;
+    // Behind every pixel's surface at every pixel the walk would enter (the walk's "in front" test).
+    if (min(d0 + tExit * dd, d0 + tCell * dd) < hizFromReverseZ(farDepth) + kHizSkipDepthMargin) return tExit;
+    // Farther behind each than it is thick (the walk's hit test, kOut at most the cell's).
+    float dk = ray.k1 - ray.k0;
+    float kMax = max(ray.k0 + tExit * dk, ray.k0 + min(tCell + slack, 1.0) * dk);
+    float sFar = ssrSurfaceDistanceOf(farDepth);  // sky anywhere in the cell: infinite, no skip
+    if (!(1.0 / kMax > (sFar + ssrThicknessAt(sFar)) * (1.0 + kHizSkipDistanceMargin))) return tExit;
+    // Where the ray leaves through one axis's edge (b), the other axis (a) must be clear of pixel lines
+    // there: not within the lookup nudge of one ahead (or of the cell's edge), nor past one by less
+    // than it moves while the b coordinate covers the nudge.
+    if (seg.dirSign.x != 0.0 && seg.dirSign.y != 0.0) {
+        vec2 edge = (farCellF + max(seg.dirSign, vec2(0.0))) * farCellSize;
+        vec2 tAxis = (edge - seg.p0) * seg.invDelta;
+        int b = tAxis.x <= tAxis.y ? 0 : 1, a = 1 - b;
+        float p = seg.p0[a] + tCell * seg.delta[a];
+        float since = seg.dirSign[a] > 0.0 ? p - floor(p) : ceil(p) - p;  // pixels past the last line
+        float window = kSsrCrossEps * abs(seg.delta[a] / seg.delta[b]);
+        if (since <= window + kSsrCrossEps || 1.0 - since <= 2.0 * kSsrCrossEps) return tExit;
+    }
+    return tCell;
 }
 
 bool ssrTrace(SsrRay ray, out vec2 hitPixel) {
@@ -89,7 +134,7 @@ bool ssrTrace(SsrRay ray, out vec2 hitPixel) {
             hitPixel = vec2(cell) + 0.5;
             return true;
         }
-        t = tExit;
+        t = (pc.flags & kSsrHizSkip) != 0u ? hizSkipBehind(seg, ray, cellF, tExit, d0, dd, slack, padded) : tExit;
     }
     return false;
 }

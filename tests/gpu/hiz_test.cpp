@@ -1,5 +1,6 @@
 // ssr-hiz on the GPU: the depth hierarchy the frame builds is exactly the min-reduction of its depth
-// buffer (hiz/hiz.h layout: levels 1.. in the atlas, odd sizes included, every hiz_threads), and the hierarchical march finds the reflections
+// buffer (hiz/hiz.h layout: levels 1.. in the atlas, odd sizes included, every hiz_threads), with the
+// far values of its 8x8 cells beside level 2, and the hierarchical march finds the reflections
 // ssr-brute finds, with the same colours. Validation + synchronization validation on throughout.
 #include "common/reflection.h"
 #include "gpu_test_util.hpp"
@@ -54,6 +55,22 @@ void expectAtlasIsMinOfDepth(const app::DepthCapture& c, const std::string& what
                 if (l == 1 && (2 * x + 1 >= screen.x || 2 * y + 1 >= screen.y)) ++edgeQuads;
             }
     }
+    // The far values of the 8x8 cells beside level 2: the least depth on screen in each (sky is 0).
+    const glm::uvec2 farSize = gpu::hizLevelSize(padded, gpu::kHizFarLevel);
+    const glm::ivec2 farOrigin = gpu::hizFarOrigin(padded);
+    const uint32_t side = 1u << gpu::kHizFarLevel;
+    size_t farSkyCells = 0;
+    for (uint32_t y = 0; y < farSize.y; ++y)
+        for (uint32_t x = 0; x < farSize.x; ++x) {
+            float expected = gpu::kHizFarNone;
+            for (uint32_t py = y * side; py < (y + 1) * side && py < screen.y; ++py)
+                for (uint32_t px = x * side; px < (x + 1) * side && px < screen.x; ++px) expected = std::min(expected, c.depth[size_t(py) * screen.x + px]);
+            farSkyCells += expected == 0.0f;
+            const float got = c.hizAtlas[size_t(farOrigin.y + y) * atlas.x + farOrigin.x + x];
+            if (got != expected && ++mismatches <= 5)
+                ADD_FAILURE() << what << ": far value of cell " << x << "," << y << " is " << got << ", expected " << expected;
+        }
+    EXPECT_GT(farSkyCells, 0u) << what;
     EXPECT_EQ(mismatches, 0u) << what;
     // The view is worth checking: some sky, some geometry.
     EXPECT_GT(sky, 0u) << what;

@@ -152,6 +152,46 @@ TEST(SsrFamily, IndirectAndWholeScreenDispatchAreBitIdentical) {
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
 
+// hiz_skip: crossing an 8x8 cell the ray stays behind in one step leaves every reflection where the
+// pixel-by-pixel walk puts it (bit for bit, ssr-hiz and PPR's fallback, at every hiz_threads and with
+// PPR's reach pass storing the cells), and it does skip: under a step cap too small for the walk,
+// the skipping march reaches more hits.
+TEST(SsrFamily, HierarchySkipBehindObjectsChangesNoReflection) {
+    GpuFixture f;
+    for (const char* camera : kCameras)
+        for (const char* technique : {"ssr-hiz", "ppr"})
+            for (const char* threads : {"16", "256"}) {
+                f.headless->settings().set("hiz_threads", threads);
+                f.headless->settings().set("hiz_skip", "1");
+                const app::FloatImage skip = renderReflection(f, technique, camera);
+                f.headless->settings().set("hiz_skip", "0");
+                const app::FloatImage walk = renderReflection(f, technique, camera);
+                ASSERT_EQ(skip.rgba.size(), walk.rgba.size());
+                EXPECT_EQ(std::memcmp(skip.rgba.data(), walk.rgba.data(), walk.rgba.size() * sizeof(float)), 0)
+                    << technique << " " << camera << " hiz_threads=" << threads;
+            }
+    f.headless->settings().set("hiz_threads", "auto");
+    f.headless->settings().set("ssr_steps", "24");
+    size_t more = 0, fewer = 0;
+    for (const char* camera : kCameras) {
+        f.headless->settings().set("hiz_skip", "1");
+        const app::FloatImage skip = renderReflection(f, "ssr-hiz", camera);
+        f.headless->settings().set("hiz_skip", "0");
+        const app::FloatImage walk = renderReflection(f, "ssr-hiz", camera);
+        for (size_t i = 0; i < size_t(walk.width) * walk.height; ++i) {
+            const bool skipHit = skip.rgba[i * 4 + 3] == gpu::kReflectionHit, walkHit = walk.rgba[i * 4 + 3] == gpu::kReflectionHit;
+            more += skipHit && !walkHit;
+            fewer += walkHit && !skipHit;
+        }
+    }
+    std::printf("ssr_steps=24: hits only with the skip %zu, only without %zu\n", more, fewer);
+    EXPECT_GT(more, 100u);
+    EXPECT_LT(fewer, more / 10);
+    f.headless->settings().set("ssr_steps", "4096");
+    f.headless->settings().set("hiz_skip", "1");
+    EXPECT_EQ(f.ctx->validationErrors(), 0u);
+}
+
 // Pixel masks from the debug views: reflector-rectangle pixels (debug=reflectors tints them) and
 // pixels whose material is flagged reflective (debug=roughness shows the flag in blue).
 std::vector<bool> otherReflectivePixels(GpuFixture& f, const std::string& camera) {

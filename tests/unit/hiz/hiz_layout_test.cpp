@@ -132,6 +132,12 @@ TEST(HizLayout, LevelsFitInTheAtlasWithoutOverlapping) {
                 EXPECT_FALSE(overlap(r, rects[other])) << screen.x << "x" << screen.y << ": levels " << other + 1 << " and " << level;
             rects.push_back(r);
         }
+        // The far values of the 8x8 cells, beside level 2, overlap no level either.
+        const Rect far{hizFarOrigin(padded), hizLevelSize(padded, kHizFarLevel)};
+        EXPECT_LE(far.origin.x + int(far.size.x), int(atlas.x)) << screen.x << "x" << screen.y;
+        EXPECT_LE(far.origin.y + int(far.size.y), int(atlas.y)) << screen.x << "x" << screen.y;
+        for (size_t other = 0; other < rects.size(); ++other)
+            EXPECT_FALSE(overlap(far, rects[other])) << screen.x << "x" << screen.y << ": the far values and level " << other + 1;
     }
 }
 
