@@ -2,7 +2,6 @@
 #extension GL_GOOGLE_include_directive : require
 #include "common/bindings.glsl"
 #include "hiz/hiz.h"
-#include "hiz/hiz_level0.glsl"
 #include "ppr_common/tiles.h"
 
 // The depth hierarchy's levels 1.. (hiz.h) in one dispatch: a workgroup per coarsest cell, which the

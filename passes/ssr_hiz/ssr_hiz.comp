@@ -17,7 +17,7 @@
 // pixel coordinates, so both the cell exits and the point where the ray reaches a depth are one
 // division each.
 
-// The hierarchy's value of a cell: level 0 is the depth buffer itself (hizLevel0), levels 1.. are in
+// The hierarchy's value of a cell: level 0 is the depth buffer itself (hizLevel0Depth), levels 1.. are in
 // the atlas. `depth` gets the level-0 sample, which the surface test then uses without fetching it
 // again.
 float hizCellMin(int level, ivec2 origin, ivec2 cell, out float depth) {
