@@ -112,13 +112,8 @@ std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f)
     project.threads = s.projectThreads;
     project.glassRegions = regions.table;
     if (reaches) {
-        reach.depth = project.depth;
-        reach.bounds = project.bounds;
-        reach.visible = project.visible;
-        reach.stats = project.stats;
-        reach.tilesX = project.tilesX;
-        reach.tilesY = project.tilesY;
-        reach.threads = s.reachThreads;
+        reach = passes::PprReachInputs{project.depth,  project.bounds, project.visible, project.stats, project.tilesX,
+                                       project.tilesY, s.reachThreads,  {},              reach.clearedArgs};
         // It reads every depth texel of each tile for the tile's box; with one invocation per tile it
         // stores the tile's levels of the depth hierarchy the fallback marches from the same reads.
         if (fallbackMarches && reach_.writesHierarchy(s.reachThreads)) reach.hierarchy = passes::HizPass::createAtlas(f.graph, f.in);
