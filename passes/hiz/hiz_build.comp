@@ -49,6 +49,14 @@ float hizQuad(ivec2 c, inout float far) {
 }
 #include "hiz/hiz_block.glsl"
 
+// Whether PPR's reach pass stored this texel of `level` (<= kHizTileLevel) and the far values in it:
+// with kFineLevelsBuilt, the texels inside the screen's tiles (hiz_threads >= 16 keeps blocks within a tile).
+bool builtByReach(ivec2 texel, uint level) {
+    uvec2 screen = uvec2(frame.screenSize);
+    ivec2 tileGrid = ivec2(pprTilesCovering(screen.x), pprTilesCovering(screen.y));  // the tiles ppr.reach walked
+    return kFineLevelsBuilt && all(lessThan(texel >> int(kHizTileLevel - level), tileGrid));
+}
+
 void main() {
     uvec2 padded = hizPaddedSize(uvec2(frame.screenSize));
     uint lid = gl_LocalInvocationIndex;
@@ -57,12 +65,8 @@ void main() {
     ivec2 cell = ivec2(gl_WorkGroupID.xy);
     ivec2 block = cell * int(1u << (kCellLevel - blockLevel)) + ivec2(hizMortonPosition(lid));  // in level blockLevel's texels
 
-    ivec2 tile = block >> int(kHizTileLevel - blockLevel);  // blockLevel <= kHizTileLevel: hiz_threads >= 16
-    uvec2 screen = uvec2(frame.screenSize);
-    ivec2 tileGrid = ivec2(pprTilesCovering(screen.x), pprTilesCovering(screen.y));  // the tiles ppr.reach walked
-    bool builtByReach = kFineLevelsBuilt && all(lessThan(tile, tileGrid));  // the far values in it too
     float far = kHizFarNone;
-    float v = builtByReach ? imageLoad(hizAtlas, hizLevelOrigin(padded, blockLevel) + block).r : hizReduceBlock(padded, block, blockLevel, far);
+    float v = builtByReach(block, blockLevel) ? imageLoad(hizAtlas, hizLevelOrigin(padded, blockLevel) + block).r : hizReduceBlock(padded, block, blockLevel, far);
     // v is now the block's texel of blockLevel.
     reduced[0][lid] = v;
     if (blockLevel < kHizFarLevel) blockFar[lid] = far;
@@ -77,7 +81,7 @@ void main() {
             hizStore(padded, level, texel, v);
             // Blocks of level 2: the level-3 texels' far values from theirs (a level-3 texel lies in one
             // PPR tile, so its blocks were all walked or all stored by the reach pass).
-            if (level == kHizFarLevel && !(kFineLevelsBuilt && all(lessThan(texel >> int(kHizTileLevel - level), tileGrid))))
+            if (level == kHizFarLevel && !builtByReach(texel, level))
                 hizStoreFar(padded, texel, min(min(blockFar[4u * lid], blockFar[4u * lid + 1u]), min(blockFar[4u * lid + 2u], blockFar[4u * lid + 3u])));
         }
         from = 1u - from;

@@ -25,12 +25,18 @@ vec2 ssrCellAt(SsrSegment seg, float t, float cellSize) {
     return floor((seg.p0 + t * seg.delta + seg.dirSign * kSsrCrossEps) / cellSize);
 }
 
-// The fraction t at which the ray leaves a cell through its far side.
-float ssrCellExit(SsrSegment seg, vec2 cell, float cellSize) {
+// Per axis, the fraction t at which the ray crosses the cell's edge ahead (kSsrNever on an axis the
+// ray does not move along).
+vec2 ssrCellAxisExits(SsrSegment seg, vec2 cell, float cellSize) {
     vec2 far = (cell + max(seg.dirSign, vec2(0.0))) * cellSize;  // the edge ahead on each axis
     vec2 tAxis = (far - seg.p0) * seg.invDelta;
-    // An axis the ray does not move along is never crossed.
-    return min(seg.dirSign.x != 0.0 ? tAxis.x : kSsrNever, seg.dirSign.y != 0.0 ? tAxis.y : kSsrNever);
+    return vec2(seg.dirSign.x != 0.0 ? tAxis.x : kSsrNever, seg.dirSign.y != 0.0 ? tAxis.y : kSsrNever);
+}
+
+// The fraction t at which the ray leaves a cell through its far side.
+float ssrCellExit(SsrSegment seg, vec2 cell, float cellSize) {
+    vec2 exits = ssrCellAxisExits(seg, cell, cellSize);
+    return min(exits.x, exits.y);
 }
 
 // The fraction of the segment the slack stands for.

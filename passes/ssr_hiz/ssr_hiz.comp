@@ -45,7 +45,8 @@ const float kHizSkipDistanceMargin = 1e-5;  // relative, view distance
 float hizSkipBehind(SsrSegment seg, SsrRay ray, vec2 cellF, float tExit, float d0, float dd, float slack, uvec2 padded) {
     const float farCellSize = float(1u << kHizFarLevel);
     vec2 farCellF = floor(cellF / farCellSize);  // = ssrCellAt(seg, t, farCellSize): exact scaling, same floor
-    float tCell = ssrCellExit(seg, farCellF, farCellSize);
+    vec2 exits = ssrCellAxisExits(seg, farCellF, farCellSize);
+    float tCell = min(exits.x, exits.y);  // ssrCellExit
     if (!(tCell > tExit)) return tExit;
     ivec2 farCell = clamp(ivec2(farCellF), ivec2(0), ivec2(hizLevelSize(padded, kHizFarLevel)) - 1);
     float farDepth = imageLoad(hizAtlas, hizFarOrigin(padded) + farCell).r;
@@ -60,9 +61,7 @@ float hizSkipBehind(SsrSegment seg, SsrRay ray, vec2 cellF, float tExit, float d
     // there: not within the lookup nudge of one ahead (or of the cell's edge), nor past one by less
     // than it moves while the b coordinate covers the nudge.
     if (seg.dirSign.x != 0.0 && seg.dirSign.y != 0.0) {
-        vec2 edge = (farCellF + max(seg.dirSign, vec2(0.0))) * farCellSize;
-        vec2 tAxis = (edge - seg.p0) * seg.invDelta;
-        int b = tAxis.x <= tAxis.y ? 0 : 1, a = 1 - b;
+        int b = exits.x <= exits.y ? 0 : 1, a = 1 - b;
         float p = seg.p0[a] + tCell * seg.delta[a];
         float since = seg.dirSign[a] > 0.0 ? p - floor(p) : ceil(p) - p;  // pixels past the last line
         float window = kSsrCrossEps * abs(seg.delta[a] / seg.delta[b]);

@@ -58,7 +58,6 @@ TileLists TileClassifyPass::add(graph::RenderGraph& g, const FrameInputs& in, co
     t.tilesX = gpu::pprTilesCovering(in.extent.width);
     t.tilesY = gpu::pprTilesCovering(in.extent.height);
     graph::BufferHandle lists = g.createBuffer("tiles.lists", {sizeof(uint32_t) * gpu::kTileClassCount * t.tileCount()});
-    const graph::BufferHandle clearedArgs = cleared.args, clearedStats = cleared.stats;
 
     gpu::TileClassifyPush push{};
     push.tilesX = t.tilesX;
@@ -68,14 +67,14 @@ TileLists TileClassifyPass::add(graph::RenderGraph& g, const FrameInputs& in, co
         .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
         .sampled(gb.reflector, in.samplers->nearestClamp)
         .sampled(gb.material, in.samplers->nearestClamp)
-        .storageReadWrite(clearedArgs, &t.args)
+        .storageReadWrite(cleared.args, &t.args)
         .storageWrite(lists, &t.lists)
         .push(push)
         .dispatch(tileGroupGrid(t.tileCount(), pipelines_.resolve(threads), gpu::kTileClassifyGroupSize, gpu::kTileClassifyGroupsPerRow),
                   gpu::kTileClassifyGroupSize);
 
     // The arguments as the dispatches will read them, into the host-visible stats.
-    t.stats = addCountCopy(g, "tiles.count", t.args, 0, clearedStats, offsetof(gpu::PprFrameStats, dispatch), sizeof(gpu::PprFrameStats::dispatch));
+    t.stats = addCountCopy(g, "tiles.count", t.args, 0, cleared.stats, offsetof(gpu::PprFrameStats, dispatch), sizeof(gpu::PprFrameStats::dispatch));
     return t;
 }
 
