@@ -265,7 +265,7 @@ private:
                            {"command", commandLine()},
                            {"environment",
                             {{"LP_NUM_THREADS", threads ? threads : ""}, {"MESA_SHADER_CACHE_DISABLE", cache ? cache : ""}}},
-                           {"settings", settings_.all()},
+                           {"settings", settings_.canonicalTexts()},
                            {"validation_errors", ctx_->validationErrors()}};
         const std::filesystem::path out(o_.out);
         util::prepareOutputDirectory(out, "--out " + o_.out);

@@ -54,7 +54,7 @@ nlohmann::json makeReport(const vk::Context& ctx, const ReportInfo& info, const 
     j["technique"] = info.technique;
     j["settings"] = nlohmann::json::object();
     if (info.settings)
-        for (const auto& [k, v] : info.settings->all()) j["settings"][k] = v;  // every declared key
+        for (const auto& [k, v] : info.settings->canonicalTexts()) j["settings"][k] = v;  // every declared key
     j["frames"] = r.frames;
     nlohmann::json passes = nlohmann::json::object();
     for (const std::string& name : r.passOrder) passes[name] = {{"gpu_ms", r.passMedianMs.at(name)}};

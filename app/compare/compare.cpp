@@ -119,7 +119,7 @@ int runCompare(const Options& o) {
         metrics["camera"] = cam.name;
         metrics["size"] = {extent.width, extent.height};
         metrics["device"] = ctx.info().name;
-        metrics["settings"] = headless.settings().all();
+        metrics["settings"] = headless.settings().canonicalTexts();
         metrics["frames"] = frames;
         metrics["reference"] = truth;
         metrics["reference_run"] = {{"technique", truth},

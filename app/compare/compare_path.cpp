@@ -76,7 +76,7 @@ int runComparePath(const Options& o) {
         metrics["path"] = o.path;
         metrics["size"] = {extent.width, extent.height};
         metrics["device"] = ctx.info().name;
-        metrics["settings"] = headless.settings().all();
+        metrics["settings"] = headless.settings().canonicalTexts();
         metrics["frames"] = poses.size();
         metrics["still"] = still;
         metrics["reference"] = o.reference;

@@ -280,7 +280,7 @@ std::string Settings::get(const std::string& key) const {
 
 double Settings::number(const std::string& key) const { return std::stod(get(key)); }
 
-std::map<std::string, std::string> Settings::all() const {
+std::map<std::string, std::string> Settings::canonicalTexts() const {
     std::map<std::string, std::string> out;
     for (const SettingDecl& d : settingDecls()) out[d.key] = d.read(values_);
     return out;

@@ -42,7 +42,7 @@ public:
     std::string get(const std::string& key) const;  // canonical text (throws std::logic_error if unknown)
     double number(const std::string& key) const;
     const FrameSettings& values() const { return values_; }
-    std::map<std::string, std::string> all() const;  // every key → canonical text (reports)
+    std::map<std::string, std::string> canonicalTexts() const;  // every key → canonical text (reports)
 
 private:
     FrameSettings values_{};

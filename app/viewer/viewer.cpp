@@ -533,7 +533,7 @@ void Viewer::run(uint64_t maxFrames, uint64_t captureAt) {
     while (!glfwWindowShouldClose(w) && !g_quit) {
         if (maxFrames && frames_ >= maxFrames) break;
         glfwPollEvents();
-        if (soak_ && soak_->step(frames_, w, settings_, technique_))
+        if (soak_ && soak_->advance(frames_, w, settings_, technique_))
             std::printf("%s\n", formatMemorySample(sampleMemory(ctx_, frames_)).c_str()), std::fflush(stdout);
 
         int fbw = 0, fbh = 0;

@@ -23,7 +23,7 @@ std::string randomValue(const SettingDecl& d, std::mt19937& rng) {
 
 }  // namespace
 
-bool ViewerSoak::step(uint64_t frame, GLFWwindow* window, Settings& settings, std::string& technique) {
+bool ViewerSoak::advance(uint64_t frame, GLFWwindow* window, Settings& settings, std::string& technique) {
     if (homeWidth_ == 0) {
         glfwGetWindowSize(window, &homeWidth_, &homeHeight_);
         homeTechnique_ = technique;

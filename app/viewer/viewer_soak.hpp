@@ -27,7 +27,7 @@ public:
 
     // Called once per loop iteration (`frame` = frames presented so far). True when a memory sample
     // should be taken now (the end of a home stretch).
-    bool step(uint64_t frame, GLFWwindow* window, Settings& settings, std::string& technique);
+    bool advance(uint64_t frame, GLFWwindow* window, Settings& settings, std::string& technique);
 
 private:
     std::string homeTechnique_;

@@ -16,7 +16,7 @@ struct Rgb {
     float r, g, b;
 };
 
-Rgb mix(const Rgb& a, const Rgb& b, float t) {
+Rgb blend(const Rgb& a, const Rgb& b, float t) {
     return {a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t};
 }
 Rgb scale(const Rgb& a, float s) { return {a.r * s, a.g * s, a.b * s}; }
@@ -100,12 +100,12 @@ TextureSet floorTiles(int size) {
             const float coarse = fbm(u, v, 4, 3, 11u + id);  // per-slab cloudiness
             const float fine = fbm(u, v, 16, 4, 23u);
             const float pick = hash01(id, 0, 7u);
-            Rgb stone = pick < 0.45f ? mix(stoneA, stoneB, hash01(id, 1, 7u)) : pick < 0.8f ? stoneB : stoneC;
+            Rgb stone = pick < 0.45f ? blend(stoneA, stoneB, hash01(id, 1, 7u)) : pick < 0.8f ? stoneB : stoneC;
             stone = scale(stone, 0.82f + 0.22f * coarse + 0.12f * (fine - 0.5f));
             // Dark pits where the fine noise dips, for texture at close range.
             const float pit = smoothstep(0.30f, 0.24f, fine);
             stone = scale(stone, 1.0f - 0.12f * pit);
-            put(set.baseColor, x, y, mix(grout, stone, slab));
+            put(set.baseColor, x, y, blend(grout, stone, slab));
             height[static_cast<size_t>(y) * size + x] =
                 slab * (0.85f + 0.1f * hash01(id, 2, 7u)) + 0.25f * (fine - 0.5f) * slab - 0.3f * pit;
             put(set.metallicRoughness, x, y, roughnessTexel(0.95f - slab * (0.22f - 0.12f * coarse)));
@@ -133,7 +133,7 @@ TextureSet bricks(int size) {
             col = scale(col, 0.85f + 0.25f * blotch + 0.15f * (fine - 0.5f));
             // A few soot-darkened bricks break up the repetition.
             if (hash01(id, 4, 5u) < 0.12f) col = scale(col, 0.7f);
-            put(set.baseColor, x, y, mix(scale(mortar, 0.9f + 0.2f * fine), col, brick));
+            put(set.baseColor, x, y, blend(scale(mortar, 0.9f + 0.2f * fine), col, brick));
             height[static_cast<size_t>(y) * size + x] = 0.15f + brick * (0.85f + 0.3f * (blotch - 0.5f)) + 0.2f * (fine - 0.5f);
             put(set.metallicRoughness, x, y, roughnessTexel(brick > 0.5f ? 0.8f + 0.1f * fine : 0.95f));
         }
@@ -158,7 +158,7 @@ TextureSet sandstone(int size) {
             // Sedimentary strata: horizontal bands bent by noise (integer frequency keeps it tileable).
             const float strata = 0.5f + 0.5f * std::sin(6.2831853f * (16.0f * v) + 2.0f * coarse);
             Rgb col = scale(base, 0.86f + 0.14f * hash01(id, 1, 9u) + 0.1f * (coarse - 0.5f) - 0.03f * strata);
-            put(set.baseColor, x, y, mix(joint, col, block));
+            put(set.baseColor, x, y, blend(joint, col, block));
             height[static_cast<size_t>(y) * size + x] = block * (0.9f + 0.2f * (coarse - 0.5f)) + 0.15f * (fine - 0.5f);
             put(set.metallicRoughness, x, y, roughnessTexel(0.85f + 0.1f * fine));
         }
@@ -178,7 +178,7 @@ Image marble(int size) {
             const float s = std::sin(6.2831853f * (2.0f * u + 1.0f * v) + 7.0f * turb);
             const float veinMask = std::pow(1.0f - std::fabs(s), 10.0f);
             const float cloud = fbm(u, v, 8, 3, 83u);
-            put(img, x, y, mix(scale(dark, 0.85f + 0.3f * cloud), vein, 0.8f * veinMask));
+            put(img, x, y, blend(scale(dark, 0.85f + 0.3f * cloud), vein, 0.8f * veinMask));
         }
     }
     return img;
@@ -225,7 +225,7 @@ TextureSet polishedTiles(int size) {
             const float inGrout = 1.0f - smoothstep(1.0f, 2.0f, c.edge);
             const float cloud = fbm(u, v, 4, 3, 131u + id);
             const Rgb stone = scale(((c.cx + c.cy) & 1) ? tileA : tileB, 0.92f + 0.12f * cloud);
-            put(set.baseColor, x, y, mix(stone, grout, inGrout));
+            put(set.baseColor, x, y, blend(stone, grout, inGrout));
             height[static_cast<size_t>(y) * size + x] = std::sqrt(bevel) * 0.9f - 0.25f * inGrout;
             put(set.metallicRoughness, x, y, roughnessTexel(0.04f + 0.7f * inGrout));
         }

@@ -28,7 +28,7 @@ TEST(Settings, EveryDeclarationIsCompleteAndUnique) {
 TEST(Settings, DefaultsReadBackAsDeclared) {
     const Settings s;
     for (const SettingDecl& d : settingDecls()) EXPECT_EQ(s.get(d.key), d.defaultValue) << d.key;
-    EXPECT_EQ(s.all().size(), settingDecls().size());
+    EXPECT_EQ(s.canonicalTexts().size(), settingDecls().size());
 }
 
 // PPR's contact march tests its taps with ssr-brute's default thickness (ppr_reflect.h): the two
@@ -102,7 +102,7 @@ void expectRejected(const std::string& assignment, const std::string& fragment) 
     } catch (const std::runtime_error& e) {
         EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
     }
-    EXPECT_EQ(s.all(), before.all()) << "a rejected value must change nothing";
+    EXPECT_EQ(s.canonicalTexts(), before.canonicalTexts()) << "a rejected value must change nothing";
 }
 
 TEST(Settings, RejectsBadValuesNamingKeyAndWhatIsAccepted) {
