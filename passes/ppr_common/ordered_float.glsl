@@ -1,5 +1,5 @@
 // Floats as order-preserving uints, so that integer atomicMin/atomicMax (and subgroupMin/Max) reduce
-// world-space bounds exactly: the projection pass and the reach pass reduce the same tile boxes.
+// world-space bounds exactly: the projection pass and the reach pass build the same tile boxes.
 #ifndef PPR_ORDERED_FLOAT_GLSL
 #define PPR_ORDERED_FLOAT_GLSL
 

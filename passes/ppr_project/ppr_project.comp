@@ -7,6 +7,7 @@
 #include "ppr_common/encoding.h"
 #include "ppr_common/ordered_float.glsl"
 #include "ppr_common/plane_grid.h"
+#include "ppr_common/tile_box.h"
 #include "ppr_common/tile_culling.h"
 #include "ppr_common/tiles.h"
 #include "ppr_project/ppr_project.h"
@@ -18,8 +19,8 @@
 // workgroup per screen tile: every tile, or with culling and indirect dispatch only the tiles the
 // reach pass listed (ppr_reach.comp: the rest would keep no reflector). Each invocation
 // reconstructs the world positions of its pixels once and keeps them in registers; the tile's
-// bounds come with the reach pass's list, or without one are reduced here (one shared atomic per
-// subgroup and value). With culling on, the workgroup then tests every reflector against the tile's
+// bounds come with the reach pass's list, or without one are built here as the reach pass builds them
+// (ppr_common/tile_box.h; one shared atomic per subgroup and value). With culling on, the workgroup then tests every reflector against the tile's
 // bounds in parallel (ppr_cull.glsl, ppr_common/tile_culling.h), skipping runs of them whose
 // summary rules them out, and keeps, in shared memory and in projection order, the survivors and the
 // possible occluders; each pixel then runs the per-reflector logic over those lists only, or, where
@@ -51,8 +52,10 @@ layout(push_constant, scalar) uniform Push { PprProjectPush pc; };
 
 const uint kPixelsPerThread = kPprTileSize * kPprTileSize / kThreads;
 
-// Tile bounds as order-preserving uints so that integer min/max reduce floats exactly.
+// Tile bounds as order-preserving uints so that integer min/max reduce floats exactly, and the
+// least depth of the tile's points (tile_box.h; the bits of a positive float).
 shared uvec3 boxLo, boxHi;
+shared uint boxLeastDepth;
 
 shared uvec2 planeRect[kPprMaxCullPlanes];          // per cull plane: the tile's mirrored screen rectangle
 shared vec3 hitLo[kPprMaxCullPlanes], hitHi[kPprMaxCullPlanes];  // and its hit region
@@ -293,7 +296,7 @@ void projectTile(vec4 points[kPixelsPerThread], uint candidates, uint occluders)
 
 void main() {
     uint lid = gl_LocalInvocationIndex;
-    // Listed by the reach pass: the tile and its box, reduced there from the same positions.
+    // Listed by the reach pass: the tile and its box, built and grown there.
     bool listed = pc.tileList != 0u;  // uniform
     PprReachedTile entry;
     if (listed) entry = reachTiles[gl_WorkGroupID.x];
@@ -301,6 +304,7 @@ void main() {
     if (lid == 0u) {
         boxLo = uvec3(0xFFFFFFFFu);
         boxHi = uvec3(0u);
+        boxLeastDepth = floatBitsToUint(1.0);
         survivorCount = 0u;
         occluderCount = 0u;
         scatteredSubgroups = 0u;
@@ -317,9 +321,11 @@ void main() {
         for (uint w = lid; w < (visibleCounts.onScreen + 1u) / 2u; w += kThreads) occluderWords[w] = 0u;
     }
 
-    // Every pixel's world position, once, for the bounds (unless listed) and the projection.
+    // Every pixel's world position, once, for the projection, and unless listed the tile's box as the
+    // reach pass builds it (tile_box.h; it holds these positions once grown).
     vec4 points[kPixelsPerThread];  // xyz: world position; w: 1 with geometry, 0 for sky or off screen
     uvec3 lo = uvec3(0xFFFFFFFFu), hi = uvec3(0u);
+    float leastDepth = 1.0;
     for (uint j = 0u; j < kPixelsPerThread; ++j) {
         points[j] = vec4(0.0);
         ivec2 pix = pixelOf(j);
@@ -329,17 +335,24 @@ void main() {
         vec3 p = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depth);
         points[j] = vec4(p, 1.0);
         if (listed) continue;
-        uvec3 ordered = orderedFromFloat(p);
+        vec2 ndc = ((vec2(pix) + 0.5) * frame.invScreenSize) * 2.0 - 1.0;  // as worldFromDepth
+        uvec3 ordered = orderedFromFloat(pprBoxPoint(frame.invViewProj, pprBoxColumnTerm(frame.invViewProj, ndc.x),
+                                                     pprBoxRowTerm(frame.invViewProj, ndc.y), depth));
+        leastDepth = min(leastDepth, depth);
         lo = min(lo, ordered);
         hi = max(hi, ordered);
     }
+    vec3 grownLo, grownHi;  // the box, grown
     if (listed) {
-        lo = entry.lo.xyz;
+        lo = entry.lo.xyz;  // grown by the reach pass
         hi = entry.hi.xyz;
+        grownLo = floatFromOrdered(lo);
+        grownHi = floatFromOrdered(hi);
         barrier();  // the shared state above is initialised
     } else {
         lo = subgroupMin(lo);
         hi = subgroupMax(hi);
+        leastDepth = subgroupMin(leastDepth);
         barrier();  // the shared state above is initialised
         if (subgroupElect() && lo.x <= hi.x) {
             atomicMin(boxLo.x, lo.x);
@@ -348,16 +361,20 @@ void main() {
             atomicMax(boxHi.x, hi.x);
             atomicMax(boxHi.y, hi.y);
             atomicMax(boxHi.z, hi.z);
+            atomicMin(boxLeastDepth, floatBitsToUint(leastDepth));
         }
         barrier();
         lo = boxLo;
         hi = boxHi;
+        grownLo = floatFromOrdered(lo);
+        grownHi = floatFromOrdered(hi);
+        pprPadTileBox(frame.invViewProj, uintBitsToFloat(boxLeastDepth), grownLo, grownHi);
     }
 
     bool hasContent = lo.x <= hi.x;  // the same in every thread
     uint candidates = hasContent ? pc.reflectorCount : 0u, occluders = candidates;
     if (pc.cullTiles != 0u) {
-        if (hasContent) cullReflectors(floatFromOrdered(lo), floatFromOrdered(hi));
+        if (hasContent) cullReflectors(grownLo, grownHi);
         candidates = survivorCount;
         occluders = occluderCount;
     }

@@ -3,14 +3,15 @@
 #include "common/bindings.glsl"
 #include "common/reflector_data.h"
 #include "ppr_common/ordered_float.glsl"
+#include "ppr_common/tile_box.h"
 #include "ppr_common/tile_culling.h"
 #include "ppr_common/tiles.h"
 #include "ppr_reach/ppr_reach.h"
 #include "hiz/hiz.h"
 
 // Before the projection pass, with per-tile culling and indirect dispatch: which screen tiles can be
-// reflected at all? kLanes invocations per tile find the world-space box of the tile's pixels, as the
-// projection pass does, and run the first test of its culling on it over the frame's reflectors on
+// reflected at all? kLanes invocations per tile find the world-space box of the tile's pixels, grown to
+// hold the positions the projection pass reconstructs (ppr_common/tile_box.h), and run the first test of its culling on it over the frame's reflectors on
 // screen (the bounds pass's list): with up to kPprReachPerReflector of them reflector by reflector,
 // beyond that per cull plane against the union of the plane's rectangles. A tile that fails has no survivor in the projection's culling, so
 // it would write nothing there: the projection is not dispatched for it. The rest are listed, in no
@@ -42,22 +43,30 @@ const uint kTilesPerGroup = kPprReachGroupSize / kLanes;
 // Per cull plane, the union of its reflecting reflectors' screen rectangles (empty: lo > hi).
 shared uint planeLoX[kPprMaxCullPlanes], planeLoY[kPprMaxCullPlanes], planeHiX[kPprMaxCullPlanes], planeHiY[kPprMaxCullPlanes];
 shared uint everyTile;  // a reflector beyond the plane tables is judged on its own rectangle: it keeps every tile
-// Per tile of the workgroup: its box as order-preserving uints, and whether a lane found it reachable.
+// Per tile of the workgroup: its box as order-preserving uints, the least depth of its points (the
+// bits of a positive float: tile_box.h) and whether a lane found it reachable.
 shared uvec3 tileLo[kTilesPerGroup], tileHi[kTilesPerGroup];
+shared uint tileLeastDepth[kTilesPerGroup];
 shared uint tileReached[kTilesPerGroup];
 
-// This invocation's share of its tile's box, as order-preserving uints (addQuad).
+// This invocation's share of its tile's box, as order-preserving uints, and of its least depth (addQuad).
 uvec3 boxLo = uvec3(0xFFFFFFFFu), boxHi = uvec3(0u);
+float leastDepth = 1.0;
 
-// The points of the 2x2 pixel quad whose top-left pixel is `quad`, added to the box, from the
-// positions the projection pass reconstructs (it culls with this box, listed with the tile below,
-// and does not reduce its own). One gather; its order: (0,1), (1,1), (1,0), (0,0). Returns the
-// quad's texel of the depth hierarchy's level 1: the min of 1 − depth over it, empty beyond the screen;
-// `far` is min-ed with its least depth on screen (hiz.h kHizFarLevel).
+// The points of the 2x2 pixel quad whose top-left pixel is `quad`, added to the box (tile_box.h: the
+// pixels' positions with the matrix terms of the quad's two columns and two rows shared; the box,
+// grown in main, holds the positions the projection pass reconstructs: it culls with that box, listed
+// with the tile below, and does not reduce its own). One gather; its order: (0,1), (1,1), (1,0),
+// (0,0). Returns the quad's texel of the depth hierarchy's level 1: the min of 1 − depth over it,
+// empty beyond the screen; `far` is min-ed with its least depth on screen (hiz.h kHizFarLevel).
 float addQuad(ivec2 quad, inout float far) {
     if (any(greaterThanEqual(quad, ivec2(frame.screenSize)))) return kHizEmpty;
     const ivec2 corners[4] = ivec2[4](ivec2(0, 1), ivec2(1, 1), ivec2(1, 0), ivec2(0, 0));
     vec4 depths = textureGather(depthTex, vec2(quad + 1) * frame.invScreenSize, 0);
+    // NDC of the quad's pixel centres, as worldFromDepth computes them.
+    vec2 ndcFirst = ((vec2(quad) + 0.5) * frame.invScreenSize) * 2.0 - 1.0, ndcSecond = ((vec2(quad + 1) + 0.5) * frame.invScreenSize) * 2.0 - 1.0;
+    vec4 columnTerms[2] = vec4[2](pprBoxColumnTerm(frame.invViewProj, ndcFirst.x), pprBoxColumnTerm(frame.invViewProj, ndcSecond.x));
+    vec4 rowTerms[2] = vec4[2](pprBoxRowTerm(frame.invViewProj, ndcFirst.y), pprBoxRowTerm(frame.invViewProj, ndcSecond.y));
     float nearest = kHizEmpty;
     for (uint c = 0u; c < 4u; ++c) {
         ivec2 pix = quad + corners[c];
@@ -65,7 +74,8 @@ float addQuad(ivec2 quad, inout float far) {
         nearest = min(nearest, hizFromReverseZ(depths[c]));
         far = min(far, depths[c]);
         if (depths[c] <= 0.0) continue;  // sky
-        uvec3 ordered = orderedFromFloat(worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depths[c]));
+        leastDepth = min(leastDepth, depths[c]);
+        uvec3 ordered = orderedFromFloat(pprBoxPoint(frame.invViewProj, columnTerms[corners[c].x], rowTerms[corners[c].y], depths[c]));
         boxLo = min(boxLo, ordered);
         boxHi = max(boxHi, ordered);
     }
@@ -154,6 +164,7 @@ void main() {
     if (lane == 0u) {
         tileLo[slot] = uvec3(0xFFFFFFFFu);
         tileHi[slot] = uvec3(0u);
+        tileLeastDepth[slot] = floatBitsToUint(1.0);
         tileReached[slot] = 0u;
     }
     if (visibleCounts.reflecting > kPprReachPerReflector) gatherPlaneRectangles();  // uniform: one value for all
@@ -177,18 +188,22 @@ void main() {
             atomicMax(tileHi[slot].x, boxHi.x);
             atomicMax(tileHi[slot].y, boxHi.y);
             atomicMax(tileHi[slot].z, boxHi.z);
+            atomicMin(tileLeastDepth[slot], floatBitsToUint(leastDepth));
         }
     }
     barrier();
     bool hasContent = inside && tileLo[slot].x <= tileHi[slot].x;
+    vec3 lo = vec3(0.0), hi = vec3(0.0);  // the tile's box, grown to hold the projection's positions
     if (hasContent) {
-        vec3 lo = floatFromOrdered(tileLo[slot]), hi = floatFromOrdered(tileHi[slot]);
+        lo = floatFromOrdered(tileLo[slot]);
+        hi = floatFromOrdered(tileHi[slot]);
+        pprPadTileBox(frame.invViewProj, uintBitsToFloat(tileLeastDepth[slot]), lo, hi);
         bool reached = visibleCounts.reflecting <= kPprReachPerReflector ? reachesAReflector(lo, hi, lane) : reachesAPlane(lo, hi, lane);
         if (reached) atomicOr(tileReached[slot], 1u);
     }
     barrier();
     if (lane != 0u || !inside) return;
     if (hasContent) atomicAdd(stats.tilesWithContent, 1u);
-    if (tileReached[slot] != 0u) reachTiles[atomicAdd(args.x, 1u)] = PprReachedTile(uvec4(tileLo[slot], pprPackTile(tile)), uvec4(tileHi[slot], 0u));
+    if (tileReached[slot] != 0u) reachTiles[atomicAdd(args.x, 1u)] = PprReachedTile(uvec4(orderedFromFloat(lo), pprPackTile(tile)), uvec4(orderedFromFloat(hi), 0u));
     else tileSurvivors[index] = 0u;
 }

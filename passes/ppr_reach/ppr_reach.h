@@ -29,7 +29,8 @@ struct PprReachPush {
 };
 // One entry of the reach pass's list: a tile the projection runs on, with the box of its points
 // (order-preserving uints, ppr_common/ordered_float.glsl) that the projection's culling starts from,
-// reduced here from the same positions the projection reconstructs, so it is not reduced twice.
+// reduced and grown here (ppr_common/tile_box.h) to hold the positions the projection reconstructs,
+// so it is not reduced twice.
 struct PprReachedTile {
     uvec4 lo;  // xyz: the box's low corner; w: the tile (pprPackTile)
     uvec4 hi;  // xyz: the box's high corner
