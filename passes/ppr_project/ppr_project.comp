@@ -19,15 +19,16 @@
 // workgroup per screen tile: every tile, or with culling and indirect dispatch only the tiles the
 // reach pass listed (ppr_reach.comp: the rest would keep no reflector). Each invocation
 // reconstructs the world positions of its pixels once and keeps them in registers; the tile's
-// bounds come with the reach pass's list, or without one are built here as the reach pass builds them
-// (ppr_common/tile_box.h; one shared atomic per subgroup and value). With culling on, the workgroup then tests every reflector against the tile's
-// bounds in parallel (ppr_cull.glsl, ppr_common/tile_culling.h), skipping runs of them whose
-// summary rules them out, and keeps, in shared memory and in projection order, the survivors and the
-// possible occluders; each pixel then runs the per-reflector logic over those lists only, or, where
-// the survivors share one plane, over those of its cells in a grid over that plane
-// (ppr_common/plane_grid.h); an invocation runs over the candidates once for all its pixels
-// (projectTile). The tests run over the frame's reflectors on screen (the bounds pass's lists), not
-// over all of them. With culling off the lists are all reflectors.
+// bounds come with the reach pass's list, or without one are built here as the reach pass builds
+// them (ppr_common/tile_box.h; one shared atomic per subgroup and value). With culling on, the
+// workgroup then tests every reflector against the tile's bounds in parallel (ppr_cull.glsl,
+// ppr_common/tile_culling.h), skipping runs of them whose summary rules them out, and keeps, in
+// shared memory and in projection order, the survivors and the possible occluders; each pixel then
+// runs the per-reflector logic over those lists only, or, where the survivors share one plane, over
+// those of its cells in a grid over that plane (ppr_common/plane_grid.h); an invocation runs over
+// the candidates once for all its pixels (projectTile). The tests run over the frame's reflectors
+// on screen (the bounds pass's lists), not over all of them. With culling off the lists are all
+// reflectors.
 // A pixel whose chosen reflector magnifies its surface also fills the cell between its landing and
 // its neighbours' (splat=1, ppr_splat.glsl).
 // kThreads invocations per tile, each projecting every kThreads-th pixel: a specialization constant

@@ -9,13 +9,15 @@
 #include "ppr_reach/ppr_reach.h"
 #include "hiz/hiz.h"
 
-// Before the projection pass, with per-tile culling and indirect dispatch: which screen tiles can be
-// reflected at all? kLanes invocations per tile find the world-space box of the tile's pixels, grown to
-// hold the positions the projection pass reconstructs (ppr_common/tile_box.h), and run the first test of its culling on it over the frame's reflectors on
-// screen (the bounds pass's list): with up to kPprReachPerReflector of them reflector by reflector,
-// beyond that per cull plane against the union of the plane's rectangles. A tile that fails has no survivor in the projection's culling, so
-// it would write nothing there: the projection is not dispatched for it. The rest are listed, in no
-// particular order and each with its box, for the projection's indirect dispatch and culling.
+// Before the projection pass, with per-tile culling and indirect dispatch: which screen tiles can
+// be reflected at all? kLanes invocations per tile find the world-space box of the tile's pixels,
+// grown to hold the positions the projection pass reconstructs (ppr_common/tile_box.h), and run the
+// first test of its culling on it over the frame's reflectors on screen (the bounds pass's list):
+// with up to kPprReachPerReflector of them reflector by reflector, beyond that per cull plane
+// against the union of the plane's rectangles. A tile that fails has no survivor in the
+// projection's culling, so it would write nothing there: the projection is not dispatched for it.
+// The rest are listed, in no particular order and each with its box, for the projection's indirect
+// dispatch and culling.
 // Left-out tiles get a survivor count of 0 (debug=tiles).
 // kLanes invocations per tile (a specialization constant, --set reach_threads: by device, ppr_reach.h),
 // kPprReachGroupSize / kLanes tiles per workgroup, the tiles in row order (the workgroups too, in
