@@ -11,3 +11,7 @@ vec3 worldFromDepth(vec2 uv, float depth) {
     vec4 p = frame.invViewProj * vec4(uv * 2.0 - 1.0, depth, 1.0);
     return p.xyz / p.w;
 }
+
+// The NDC of pixel `pix`'s centre, to the bit as worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, ·)
+// computes it (the tile box of ppr_common/tile_box.h relies on the same x and y).
+vec2 ndcOfPixelCentre(ivec2 pix) { return ((vec2(pix) + 0.5) * frame.invScreenSize) * 2.0 - 1.0; }

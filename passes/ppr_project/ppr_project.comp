@@ -336,7 +336,7 @@ void main() {
         vec3 p = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depth);
         points[j] = vec4(p, 1.0);
         if (listed) continue;
-        vec2 ndc = ((vec2(pix) + 0.5) * frame.invScreenSize) * 2.0 - 1.0;  // as worldFromDepth
+        vec2 ndc = ndcOfPixelCentre(pix);
         uvec3 ordered = orderedFromFloat(pprBoxPoint(frame.invViewProj, pprBoxColumnTerm(frame.invViewProj, ndc.x),
                                                      pprBoxRowTerm(frame.invViewProj, ndc.y), depth));
         leastDepth = min(leastDepth, depth);

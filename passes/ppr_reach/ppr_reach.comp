@@ -65,8 +65,7 @@ float addQuad(ivec2 quad, inout float far) {
     if (any(greaterThanEqual(quad, ivec2(frame.screenSize)))) return kHizEmpty;
     const ivec2 corners[4] = ivec2[4](ivec2(0, 1), ivec2(1, 1), ivec2(1, 0), ivec2(0, 0));
     vec4 depths = textureGather(depthTex, vec2(quad + 1) * frame.invScreenSize, 0);
-    // NDC of the quad's pixel centres, as worldFromDepth computes them.
-    vec2 ndcFirst = ((vec2(quad) + 0.5) * frame.invScreenSize) * 2.0 - 1.0, ndcSecond = ((vec2(quad + 1) + 0.5) * frame.invScreenSize) * 2.0 - 1.0;
+    vec2 ndcFirst = ndcOfPixelCentre(quad), ndcSecond = ndcOfPixelCentre(quad + 1);
     vec4 columnTerms[2] = vec4[2](pprBoxColumnTerm(frame.invViewProj, ndcFirst.x), pprBoxColumnTerm(frame.invViewProj, ndcSecond.x));
     vec4 rowTerms[2] = vec4[2](pprBoxRowTerm(frame.invViewProj, ndcFirst.y), pprBoxRowTerm(frame.invViewProj, ndcSecond.y));
     float nearest = kHizEmpty;
