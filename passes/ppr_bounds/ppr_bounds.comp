@@ -14,12 +14,14 @@
 // invocation takes a contiguous run of the projection order, and a scan of the runs' counts ranks
 // them, so the lists keep projection order and never depend on thread timing. Every run of
 // kPprCullChunk candidates gets a summary (PprCullChunk) that lets a tile skip the run unread, and
-// so does every run of the on-screen list (after the candidates' summaries).
+// so does every run of the on-screen list (after the candidates' summaries). Every cull plane gets
+// the bounds of its candidates (PprCullPlaneBounds), which the reach pass tests a tile against when
+// there are too many reflectors to test one by one.
 layout(local_size_x = kPprBoundsGroupSize) in;
 layout(set = 0, binding = 1, scalar) readonly buffer Reflectors { ReflectorData reflectors[]; };
 layout(set = 0, binding = 2, scalar) writeonly buffer Bounds { PprReflectorBounds bounds[]; };
 layout(set = 0, binding = 3, scalar) readonly buffer Order { uint projectionOrder[]; };
-layout(set = 0, binding = 4, scalar) writeonly buffer Visible { PPR_VISIBLE_REFLECTORS; };
+layout(set = 0, binding = 4, scalar) buffer Visible { PPR_VISIBLE_REFLECTORS; };  // read-write: the planes' atomics
 layout(set = 0, binding = 5, scalar) buffer Stats { PprFrameStats stats; };
 layout(push_constant, scalar) uniform Push { PprBoundsPush pc; };
 
@@ -31,6 +33,7 @@ const uint kSummaries = 2u * kPprCullChunkCount;
 shared uint sumLoX[kSummaries], sumLoY[kSummaries], sumHiX[kSummaries], sumHiY[kSummaries];
 shared uvec3 sumBoxLo[kPprCullChunkCount], sumBoxHi[kPprCullChunkCount];
 shared uint sumPlaneLo[kSummaries], sumPlaneHi[kSummaries], sumGlass[kSummaries];
+shared uint unplaned;  // candidates in no cull plane
 
 void addToSummary(uint slot, uvec2 rect, ReflectorData reflector) {
     atomicMin(sumLoX[slot], rect.x & 0xFFFFu);
@@ -40,6 +43,23 @@ void addToSummary(uint slot, uvec2 rect, ReflectorData reflector) {
     atomicMin(sumPlaneLo[slot], reflector.cullPlane);
     atomicMax(sumPlaneHi[slot], reflector.cullPlane);
     if (reflector.kind != kReflectorGlass) atomicAnd(sumGlass[slot], 0u);
+}
+
+void addToPlane(uint plane, uvec2 rect, uvec3 boxLo, uvec3 boxHi) {
+    if (plane == kPprNoCullPlane) {
+        atomicAdd(unplaned, 1u);
+        return;
+    }
+    atomicMin(cullPlaneBounds[plane].loX, rect.x & 0xFFFFu);
+    atomicMin(cullPlaneBounds[plane].loY, rect.x >> 16u);
+    atomicMax(cullPlaneBounds[plane].hiX, rect.y & 0xFFFFu);
+    atomicMax(cullPlaneBounds[plane].hiY, rect.y >> 16u);
+    atomicMin(cullPlaneBounds[plane].boxLo.x, boxLo.x);
+    atomicMin(cullPlaneBounds[plane].boxLo.y, boxLo.y);
+    atomicMin(cullPlaneBounds[plane].boxLo.z, boxLo.z);
+    atomicMax(cullPlaneBounds[plane].boxHi.x, boxHi.x);
+    atomicMax(cullPlaneBounds[plane].boxHi.y, boxHi.y);
+    atomicMax(cullPlaneBounds[plane].boxHi.z, boxHi.z);
 }
 
 void main() {
@@ -68,6 +88,10 @@ void main() {
             sumBoxHi[c] = uvec3(0u);
         }
     }
+    for (uint p = lid; p < pc.cullPlaneCount; p += kPprBoundsGroupSize)
+        cullPlaneBounds[p] = PprCullPlaneBounds(0xFFFFu, 0xFFFFu, 0u, 0u, uvec3(0xFFFFFFFFu), 0u, uvec3(0u), 0u);
+    if (lid == 0u) unplaned = 0u;
+    memoryBarrierBuffer();  // the planes' bounds are reduced in place below
     barrier();
     // Inclusive scan of the runs' counts (Hillis–Steele: log2 of the group size steps).
     for (uint d = 1u; d < kPprBoundsGroupSize; d <<= 1u) {
@@ -95,6 +119,7 @@ void main() {
             atomicMax(sumBoxHi[c].x, h.x);
             atomicMax(sumBoxHi[c].y, h.y);
             atomicMax(sumBoxHi[c].z, h.z);
+            addToPlane(reflector.cullPlane, rect, l, h);
             visibleLists[r++] = i;
         }
         addToSummary(kPprCullChunkCount + s / kPprCullChunk, rect, reflector);
@@ -115,7 +140,7 @@ void main() {
         cullChunks[slot] = chunk;
     }
     if (lid == kPprBoundsGroupSize - 1u) {
-        visibleCounts = PprVisibleCounts(total & 0xFFFFu, total >> 16u, 0u, 0u);
+        visibleCounts = PprVisibleCounts(total & 0xFFFFu, total >> 16u, unplaned, 0u);
         stats.reflectorsReflecting = total & 0xFFFFu;
         stats.reflectorsOnScreen = total >> 16u;
     }

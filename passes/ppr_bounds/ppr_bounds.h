@@ -10,9 +10,9 @@ PPR_CONST(uint, kPprBoundsGroupSize, 256u)
 PPR_BEGIN
 struct PprBoundsPush {
     uint reflectorCount;
+    uint cullPlaneCount;  // ≤ kPprMaxCullPlanes
     uint pad0;
     uint pad1;
-    uint pad2;
 };
 PPR_END
 PPR_SIZE_CHECK(PprBoundsPush, 16);

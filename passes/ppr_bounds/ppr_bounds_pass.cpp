@@ -15,7 +15,8 @@ static_assert(gpu::kPprMaxReflectors <= 32u * gpu::kPprBoundsGroupSize && gpu::k
               "ppr.bounds compacts every reflector in one workgroup");
 static_assert(gpu::kPprMaxReflectors % gpu::kPprBoundsGroupSize == 0u, "a run's rectangles fit the shader's array");
 static_assert(gpu::kPprCullChunkCount * gpu::kPprCullChunk == gpu::kPprMaxReflectors, "a chunk summary for every run of candidates");
-static_assert(gpu::kPprVisibleListsOffset == sizeof(gpu::PprVisibleCounts) + 2 * gpu::kPprCullChunkCount * sizeof(gpu::PprCullChunk),
+static_assert(gpu::kPprVisibleListsOffset == sizeof(gpu::PprVisibleCounts) + 2 * gpu::kPprCullChunkCount * sizeof(gpu::PprCullChunk) +
+                                                 gpu::kPprMaxCullPlanes * sizeof(gpu::PprCullPlaneBounds),
               "PPR_VISIBLE_REFLECTORS's layout");
 
 PprBoundsPass::PprBoundsPass(const vk::Context& ctx) : ctx_(ctx) {
@@ -27,6 +28,7 @@ PprBoundsPass::PprBoundsPass(const vk::Context& ctx) : ctx_(ctx) {
 PprBoundsOutputs PprBoundsPass::add(graph::RenderGraph& g, const FrameInputs& in, const ReflectorBinding& r, graph::BufferHandle stats) const {
     gpu::PprBoundsPush push{};
     push.reflectorCount = r.count;
+    push.cullPlaneCount = r.cullPlanes;
     const VkDeviceSize entries = std::max<uint32_t>(r.count, 1);
     PprBoundsOutputs out;
     ComputePass(g, ctx_, "ppr.bounds", pipeline_)

@@ -240,8 +240,8 @@ PPR_BEGIN
 struct PprVisibleCounts {
     uint reflecting;
     uint onScreen;
+    uint unplaned;  // reflecting reflectors in no cull plane (kPprNoCullPlane)
     uint pad0;
-    uint pad1;
 };
 PPR_END
 PPR_SIZE_CHECK(PprVisibleCounts, 16);
@@ -268,12 +268,33 @@ struct PprCullChunk {
 PPR_END
 PPR_SIZE_CHECK(PprCullChunk, 40);
 
+PPR_BEGIN
+// Per cull plane, reduced by the bounds pass over the plane's reflectors in the reflecting list: the
+// union of their screen rectangles and of their world boxes (pprRectangleBox grown by kPprCullSlack,
+// as the chunk summaries), which the reach pass tests a tile against beyond kPprReachPerReflector
+// reflectors. No reflector of the plane listed: loX > hiX.
+struct PprCullPlaneBounds {
+    uint loX;
+    uint loY;
+    uint hiX;
+    uint hiY;
+    uvec3 boxLo;  // order-preserving uints (ppr_common/ordered_float.glsl)
+    uint pad0;
+    uvec3 boxHi;
+    uint pad1;
+};
+PPR_END
+PPR_SIZE_CHECK(PprCullPlaneBounds, 48);
+
 // "ppr.visible_reflectors" as the shaders declare it (`buffer Visible { PPR_VISIBLE_REFLECTORS; }`):
-// the counts, the candidates' chunk summaries, the on-screen list's, then the two lists.
+// the counts, the candidates' chunk summaries, the on-screen list's, the cull planes' bounds, then the
+// two lists.
 #ifndef __cplusplus
-#define PPR_VISIBLE_REFLECTORS PprVisibleCounts visibleCounts; PprCullChunk cullChunks[2u * kPprCullChunkCount]; uint visibleLists[]
+#define PPR_VISIBLE_REFLECTORS                                                                                  \
+    PprVisibleCounts visibleCounts; PprCullChunk cullChunks[2u * kPprCullChunkCount];                         \
+    PprCullPlaneBounds cullPlaneBounds[kPprMaxCullPlanes]; uint visibleLists[]
 #endif
-PPR_CONST(uint, kPprVisibleListsOffset, 16u + 40u * 2u * kPprCullChunkCount)  // bytes before visibleLists
+PPR_CONST(uint, kPprVisibleListsOffset, 16u + 40u * 2u * kPprCullChunkCount + 48u * kPprMaxCullPlanes)  // bytes before visibleLists
 
 PPR_BEGIN
 // The world box pprRectangleMeetsBox tests a reflector's rectangle by.

@@ -14,8 +14,9 @@
 // grown to hold the positions the projection pass reconstructs (ppr_common/tile_box.h), and run the
 // first test of its culling on it over the frame's reflectors on screen (the bounds pass's list):
 // with up to kPprReachPerReflector of them reflector by reflector, beyond that per cull plane
-// against the union of the plane's rectangles. A tile that fails has no survivor in the
-// projection's culling, so it would write nothing there: the projection is not dispatched for it.
+// against the unions of the plane's rectangles and world boxes. A tile that fails has no survivor
+// in the projection's culling, so it would write nothing there: the projection is not dispatched
+// for it.
 // The rest are listed, in no particular order and each with its box, for the projection's indirect
 // dispatch and culling.
 // Left-out tiles get a survivor count of 0 (debug=tiles).
@@ -42,9 +43,6 @@ layout(push_constant, scalar) uniform Push { PprReachPush pc; };
 
 const uint kTilesPerGroup = kPprReachGroupSize / kLanes;
 
-// Per cull plane, the union of its reflecting reflectors' screen rectangles (empty: lo > hi).
-shared uint planeLoX[kPprMaxCullPlanes], planeLoY[kPprMaxCullPlanes], planeHiX[kPprMaxCullPlanes], planeHiY[kPprMaxCullPlanes];
-shared uint everyTile;  // a reflector beyond the plane tables is judged on its own rectangle: it keeps every tile
 // Per tile of the workgroup: its box as order-preserving uints, the least depth of its points (the
 // bits of a positive float: tile_box.h) and whether a lane found it reachable.
 shared uvec3 tileLo[kTilesPerGroup], tileHi[kTilesPerGroup];
@@ -86,29 +84,6 @@ float addQuad(ivec2 quad, inout float far) {
 float hizQuad(ivec2 texel, inout float far) { return addQuad(2 * texel, far); }
 #include "hiz/hiz_block.glsl"
 
-void gatherPlaneRectangles() {
-    uint lid = gl_LocalInvocationIndex;
-    if (lid == 0u) everyTile = 0u;
-    for (uint p = lid; p < pc.cullPlaneCount; p += kPprReachGroupSize) {
-        planeLoX[p] = planeLoY[p] = 0xFFFFu;
-        planeHiX[p] = planeHiY[p] = 0u;
-    }
-    barrier();
-    for (uint k = lid; k < visibleCounts.reflecting; k += kPprReachGroupSize) {
-        uint i = visibleLists[k];
-        PprReflectorBounds b = bounds[i];  // listed: on screen, reflecting side seen
-        uint plane = reflectors[i].cullPlane;
-        if (plane == kPprNoCullPlane) {
-            everyTile = 1u;
-            continue;
-        }
-        atomicMin(planeLoX[plane], b.rect.x & 0xFFFFu);
-        atomicMin(planeLoY[plane], b.rect.x >> 16u);
-        atomicMax(planeHiX[plane], b.rect.y & 0xFFFFu);
-        atomicMax(planeHiY[plane], b.rect.y >> 16u);
-    }
-}
-
 // The projection's first culling test, reflector by reflector (this lane's share: every kLanes-th):
 // does the tile's mirror image in the reflector's plane meet its screen rectangle, and its hit region
 // the reflector's rectangle? (pprTileMayReachReflector, with the hit region built only for a plane
@@ -142,16 +117,24 @@ bool reachesAReflector(vec3 boxLo, vec3 boxHi, uint lane) {
     return false;
 }
 
-// The same with each plane's reflectors merged into one rectangle (gatherPlaneRectangles): coarser,
-// but its cost per tile does not grow with the reflector count.
+// The same with each plane's reflectors merged (the bounds pass's PprCullPlaneBounds): does the
+// tile's mirror image meet the union of the plane's screen rectangles, and its hit region the union
+// of their world boxes? Coarser, but its cost per tile does not grow with the reflector count.
 bool reachesAPlane(vec3 boxLo, vec3 boxHi, uint lane) {
-    if (everyTile != 0u) return true;
+    if (visibleCounts.unplaned != 0u) return true;  // judged on its own rectangle: it keeps every tile
     for (uint plane = lane; plane < pc.cullPlaneCount; plane += kLanes) {
-        if (planeLoX[plane] > planeHiX[plane]) continue;  // no reflecting rectangle in this plane
+        PprCullPlaneBounds merged = cullPlaneBounds[plane];
+        if (merged.loX > merged.hiX) continue;  // no reflecting rectangle in this plane
+        // The plane's reflectors as one chunk summary (pprTileMayReachChunk), the hit region built
+        // only when the mirror image meets their rectangle.
+        PprCullChunk chunk = PprCullChunk(uvec2(merged.loX | (merged.loY << 16u), merged.hiX | (merged.hiY << 16u)),
+                                          floatFromOrdered(merged.boxLo), plane, floatFromOrdered(merged.boxHi), 0u);
         ReflectorData leader = reflectors[planeLeaders[plane]];
         uvec2 mirrored = pprTileReflectedRect(boxLo, boxHi, leader.normal, leader.center, frame.viewProj, frame.screenSize);
-        uvec2 planeRect = uvec2(planeLoX[plane] | (planeLoY[plane] << 16u), planeHiX[plane] | (planeHiY[plane] << 16u));
-        if (pprRectsOverlap(mirrored, planeRect)) return true;
+        if (!pprRectsOverlap(mirrored, chunk.rect)) continue;
+        vec3 hitLo, hitHi;
+        pprTileHitRegion(boxLo, boxHi, leader.normal, leader.center, frame.cameraPos.xyz, hitLo, hitHi);
+        if (pprTileMayReachChunk(chunk, mirrored, hitLo, hitHi)) return true;
     }
     return false;
 }
@@ -168,7 +151,6 @@ void main() {
         tileLeastDepth[slot] = floatBitsToUint(1.0);
         tileReached[slot] = 0u;
     }
-    if (visibleCounts.reflecting > kPprReachPerReflector) gatherPlaneRectangles();  // uniform: one value for all
     barrier();
 
     // The box of the tile's points (addQuad), each lane from its share of the tile's 2x2 quads.

@@ -17,7 +17,7 @@ PPR_CONST(uint, kPprReachGroupsPerRow, 1024u)  // workgroups per row of the disp
 PPR_CONST(uint, kPprReachThreads, 1u)
 PPR_CONST(uint, kPprReachThreadsGpu, 16u)
 // Up to this many reflectors each tile tests every one (the projection's own first test, so exactly
-// the tiles with survivors are listed); beyond, one merged rectangle per cull plane.
+// the tiles with survivors are listed); beyond, each cull plane's merged bounds (PprCullPlaneBounds).
 PPR_CONST(uint, kPprReachPerReflector, 64u)
 
 PPR_BEGIN

@@ -210,8 +210,8 @@ TEST(PprTiles, CullingLoopsOverTheReflectorsOnScreen) {
 }
 
 // With culling and indirect dispatch the projection runs only on the tiles the reach pass lists:
-// with few reflectors exactly those left with a survivor, with many (one merged rectangle per
-// plane) a superset of them. The counts and the per-tile survivors (debug=tiles) are those of the
+// with few reflectors exactly those left with a survivor, with many (each plane's reflectors merged
+// into one summary, PprCullPlaneBounds) a superset of them. The counts and the per-tile survivors (debug=tiles) are those of the
 // whole-screen dispatch.
 void expectReachListsTheTilesWithSurvivors(GpuFixture& f, const std::string& camera, bool exact) {
     const scene::CameraPose pose = f.camera(camera);
@@ -240,7 +240,7 @@ TEST(PprTiles, ProjectionRunsOnlyWhereAReflectorCanBeReached) {
         for (const char* camera : {"overview", "stairs", "normalmap"}) expectReachListsTheTilesWithSurvivors(f, camera, true);
         EXPECT_EQ(f.ctx->validationErrors(), 0u);
     }
-    GpuFixture f(scene::makeStressScene(256));  // beyond kPprReachPerReflector: one rectangle per plane
+    GpuFixture f(scene::makeStressScene(256));  // beyond kPprReachPerReflector: one summary per plane
     expectReachListsTheTilesWithSurvivors(f, "reflective_25", false);
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }

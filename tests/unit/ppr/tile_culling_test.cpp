@@ -829,14 +829,16 @@ TEST(PprTileCulling, CullPlanesShareAcrossPlaneGroupBoundaries) {
 
 }  // namespace
 
-// The bounds pass's chunk summaries (PprCullChunk): a tile skips a run of up to kPprCullChunk
-// candidates when the summary rules it out, so the summary must never rule out a run holding a
-// reflector pprTileMayReachReflector keeps. Random coplanar runs around a random tile, summarised
-// as the bounds pass does (union of screen rectangles, union of pprRectangleBox grown by the slack).
-TEST(PprTileCulling, ChunkSummaryNeverRulesOutAKeptReflector) {
-    Rng rng(20261127u);
+namespace {
+
+// A summary of coplanar reflectors (PprCullChunk) must never rule out a tile for which
+// pprTileMayReachReflector keeps one of them. Random coplanar runs of 1..maxMembers reflectors
+// around a random tile, summarised as the bounds pass does (union of screen rectangles, union of
+// pprRectangleBox grown by the slack); `cases` runs.
+void expectSummaryKeepsEveryKeptReflector(uint32_t seed, uint32_t maxMembers, int cases) {
+    Rng rng(seed);
     int runsWithAKept = 0, ruledOut = 0;
-    for (int c = 0; c < 20000; ++c) {
+    for (int c = 0; c < cases; ++c) {
         const View v = randomView(rng);
         const Tile tile = randomTile(rng, v);
         const Rect first = randomReflector(rng, v, tile, rng.chance(0.5f) ? Kind::Targeted : Kind::AimedRandomNormal);
@@ -849,7 +851,8 @@ TEST(PprTileCulling, ChunkSummaryNeverRulesOutAKeptReflector) {
         uvec2 lo(0xFFFFu), hi(0u);
         bool anyKept = false, anyMember = false;
         CullVerdict plane{};
-        for (uint32_t m = 0; m < ppr::gpu::kPprCullChunk; ++m) {
+        const uint32_t members = maxMembers <= ppr::gpu::kPprCullChunk ? maxMembers : uint32_t(rng.integer(1, int(maxMembers)));
+        for (uint32_t m = 0; m < members; ++m) {
             Rect r = first;
             if (m > 0) {  // a coplanar neighbour (cull planes allow 10 µm), turned in the plane
                 r.tangent = tangentFor(rng, r.normal);
@@ -878,7 +881,18 @@ TEST(PprTileCulling, ChunkSummaryNeverRulesOutAKeptReflector) {
         ruledOut += !mayReach;
         ASSERT_TRUE(mayReach || !anyKept) << "case " << c << ": the summary ruled out a run with a kept reflector\n  " << describe(v, first);
     }
-    std::printf("runs with a kept reflector %d, runs ruled out %d\n", runsWithAKept, ruledOut);
-    EXPECT_GT(runsWithAKept, 1000);
-    EXPECT_GT(ruledOut, 1000) << "the summary should rule out runs far from the tile's reflection";
+    std::printf("runs of up to %u: with a kept reflector %d, ruled out %d\n", maxMembers, runsWithAKept, ruledOut);
+    EXPECT_GT(runsWithAKept, cases / 20);
+    EXPECT_GT(ruledOut, cases / 20) << "the summary should rule out runs far from the tile's reflection";
 }
+
+}  // namespace
+
+// The bounds pass's chunk summaries: a tile skips a run of kPprCullChunk candidates when the
+// summary rules it out.
+TEST(PprTileCulling, ChunkSummaryNeverRulesOutAKeptReflector) { expectSummaryKeepsEveryKeptReflector(20261127u, ppr::gpu::kPprCullChunk, 20000); }
+
+// The bounds pass's cull-plane bounds (PprCullPlaneBounds), which the reach pass tests as one summary
+// per plane beyond kPprReachPerReflector reflectors: every candidate of the plane, up to the stress
+// scene's 1 024.
+TEST(PprTileCulling, CullPlaneBoundsNeverRuleOutAKeptReflector) { expectSummaryKeepsEveryKeptReflector(20261129u, 1024u, 4000); }
