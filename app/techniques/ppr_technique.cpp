@@ -57,7 +57,8 @@ void PprTechnique::queueGlass(TechniqueFrame& f, passes::TransferBatch& lists, p
     resolve.atlasSize = glass->atlasSize;
     resolve.blockCount = f.services.glass.resolveBlocks();
     resolve.flags = resolveFlags(f.settings.ppr);
-    passes::GlassReflectPass::queueClears(f.graph, clears, resolve);
+    // The resolve writes every texel the glass pass reads; the atlas view shows them all.
+    if (f.settings.view.debug == gpu::kDebugAtlas) passes::GlassReflectPass::queueClears(f.graph, clears, resolve);
 }
 
 std::optional<graph::ImageHandle> PprTechnique::addReflection(TechniqueFrame& f) {

@@ -25,38 +25,40 @@ graph::ImageHandle GlassReflectPass::addAtlasView(graph::RenderGraph& g, const F
     return out;
 }
 
+graph::ImageHandle GlassReflectPass::createTarget(graph::RenderGraph& g, uint32_t atlasSize) {
+    return g.createImage("ppr.glass.reflection", {atlasSize, atlasSize, kFormat, 1});
+}
+
 void GlassReflectPass::queueClears(graph::RenderGraph& g, TransferBatch& batch, GlassReflectInputs& inputs) {
-    const uint32_t size = inputs.atlasSize;
-    // Texels outside the regions hold no reflection: cleared (cheap, transfer), not dispatched.
-    batch.clearImage(g.createImage("ppr.glass.reflection", {size, size, kFormat, 1}), VkClearColorValue{}, "ppr.glass.reflection.clear",
-                     &inputs.clearedTarget.emplace());
+    batch.clearImage(createTarget(g, inputs.atlasSize), VkClearColorValue{}, "ppr.glass.reflection.clear", &inputs.clearedTarget.emplace());
 }
 
 graph::ImageHandle GlassReflectPass::add(graph::RenderGraph& g, const FrameInputs& in, const GlassReflectInputs& inputs) const {
-    graph::ImageHandle target;
-    if (inputs.clearedTarget) {
-        target = *inputs.clearedTarget;
-    } else {
+    const bool resolves = inputs.blockCount > 0 && inputs.regionCount > 0;
+    std::optional<graph::ImageHandle> cleared = inputs.clearedTarget;
+    if (!cleared && !resolves) {  // nothing writes the rings: every texel "no reflection"
         TransferBatch batch(in);
         GlassReflectInputs own = inputs;
         queueClears(g, batch, own);
         batch.add(g, "ppr.glass.reflection.clear");
-        target = *own.clearedTarget;
+        cleared = own.clearedTarget;
     }
-    if (inputs.blockCount == 0 || inputs.regionCount == 0) return target;
+    if (!resolves) return *cleared;
     gpu::GlassReflectPush push{};
     push.regionCount = inputs.regionCount;
     push.flags = inputs.flags;
     graph::ImageHandle out;
-    ComputePass(g, ctx_, "ppr.glass.reflect", pipeline_)
-        .uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
+    ComputePass pass(g, ctx_, "ppr.glass.reflect", pipeline_);
+    pass.uniform(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
         .storageRead(inputs.atlas)
         .sampled(inputs.sceneColor, in.samplers->linearClamp)
         .sampled(inputs.sceneColor, in.samplers->nearestClamp)
         .storageRead(inputs.regions)
-        .storageRead(inputs.regionList)
-        .storageReadWrite(target, &out)
-        .storageRead(inputs.blockStarts)
+        .storageRead(inputs.regionList);
+    // Uncleared, it gets every texel it is read at: the regions and their rings.
+    if (cleared) pass.storageReadWrite(*cleared, &out);
+    else pass.storageWrite(createTarget(g, inputs.atlasSize), &out);
+    pass.storageRead(inputs.blockStarts)
         .push(push)
         .dispatch({inputs.blockCount * gpu::kGlassReflectGroupSize, gpu::kGlassReflectGroupSize}, gpu::kGlassReflectGroupSize);  // a row of blocks
     return out;

@@ -29,7 +29,8 @@ void GlassRegionTable::fill(const scene::GlassAtlasLayout& layout) {
     std::fill(table_.begin(), table_.end(), gpu::GlassRegionData{});
     uint32_t n = 0;
     blockCount_ = 0;
-    const auto blocks = [](uint32_t texels) { return (texels + gpu::kGlassReflectGroupSize - 1u) / gpu::kGlassReflectGroupSize; };
+    // Blocks over the region and a one-texel ring around it (glass_reflect.comp writes the ring).
+    const auto blocks = [](uint32_t texels) { return (texels + 2u + gpu::kGlassReflectGroupSize - 1u) / gpu::kGlassReflectGroupSize; };
     for (const scene::GlassRegion& r : layout.regions) {
         if (r.reflectorIndex >= table_.size()) continue;
         table_[r.reflectorIndex] = pack(r);

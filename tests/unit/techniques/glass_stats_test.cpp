@@ -39,16 +39,16 @@ TEST(GlassRegionTable, TheResolveRunsEachRegionsBlocksOneRegionAfterAnother) {
     ppr::scene::GlassAtlasLayout layout;
     table.fill(layout);
     EXPECT_EQ(table.blockCount(), 0u);
-    // 130x500: 9 x 32 blocks (partial ones count), 250x240: 16 x 15, 16x16: one; a reflector beyond
-    // the table gets no region and no block.
+    // Each region with its one-texel ring: 132x502: 9 x 32 blocks (partial ones count), 252x242:
+    // 16 x 16, 18x18: 2 x 2; a reflector beyond the table gets no region and no block.
     layout.regions = {region({0, 0}, {130, 500}, 2), region({130, 0}, {250, 240}, 0), region({0, 500}, {16, 16}, 3),
                       region({0, 520}, {40, 40}, 9)};
     table.fill(layout);
-    EXPECT_EQ(table.blockCount(), 288u + 240u + 1u);
+    EXPECT_EQ(table.blockCount(), 288u + 256u + 4u);
     const std::vector<uint32_t>& starts = table.blockStarts();
     ASSERT_EQ(starts.size(), 5u);
     EXPECT_EQ(starts[0], 0u);
     EXPECT_EQ(starts[1], 288u);
-    EXPECT_EQ(starts[2], 528u);
-    EXPECT_EQ(starts[3], 529u);  // after the last listed region: the total
+    EXPECT_EQ(starts[2], 544u);
+    EXPECT_EQ(starts[3], 548u);  // after the last listed region: the total
 }
