@@ -2,6 +2,7 @@
 
 #include "cli/cli.hpp"
 #include "render/memory_log.hpp"
+#include "scene/glass_atlas.hpp"
 #include "techniques/technique_table.hpp"
 
 #include "hiz/hiz.h"
@@ -204,7 +205,17 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
     }
     if (glassCopied) {
         vmaInvalidateAllocation(ctx_.allocator(), glassReadback_.allocation, 0, VK_WHOLE_SIZE);
-        result.glassReflection = floatImageFromHalf(glassReadback_.mapped, glassAtlas, glassAtlas);
+        const FloatImage read = floatImageFromHalf(glassReadback_.mapped, glassAtlas, glassAtlas);
+        // Only the regions and their rings are defined (PPR's resolve leaves the rest as it finds
+        // it); the rest reads as "no reflection", as a cleared atlas would.
+        result.glassReflection.width = result.glassReflection.height = glassAtlas;
+        result.glassReflection.rgba.assign(read.rgba.size(), 0.0f);
+        if (result.glass)
+            for (const scene::ScreenRect& t : scene::glassAtlasDefinedRects(result.glass->layout, glassAtlas))
+                for (int32_t y = t.y0; y < t.y1; ++y) {
+                    const size_t row = (size_t(y) * glassAtlas + size_t(t.x0)) * 4;
+                    std::copy(read.rgba.begin() + row, read.rgba.begin() + row + size_t(t.width()) * 4, result.glassReflection.rgba.begin() + row);
+                }
     }
     for (auto& [name, values] : perPass) result.passMedianMs[name] = median(values);
     result.totalMedianMs = median(totals);

@@ -111,6 +111,18 @@ std::optional<std::vector<glm::ivec2>> packRects(const std::vector<glm::ivec2>& 
     return origins;
 }
 
+std::vector<ScreenRect> glassAtlasDefinedRects(const std::vector<GlassRegion>& regions, uint32_t atlasSize) {
+    static_assert(kGlassAtlasGutter >= 1, "the rings must not reach into a neighbouring region");
+    const int32_t size = static_cast<int32_t>(std::min<uint32_t>(atlasSize, std::numeric_limits<int32_t>::max()));
+    std::vector<ScreenRect> rects;
+    for (const GlassRegion& r : regions) {
+        const ScreenRect ring{std::max(r.atlasOrigin.x - 1, 0), std::max(r.atlasOrigin.y - 1, 0),
+                              std::min(r.atlasOrigin.x + r.atlasSize.x + 1, size), std::min(r.atlasOrigin.y + r.atlasSize.y + 1, size)};
+        if (!ring.empty()) rects.push_back(ring);
+    }
+    return rects;
+}
+
 GlassAtlasLayout packGlassAtlas(const std::vector<Reflector>& reflectors, const std::vector<uint32_t>& glassIndices,
                                 const glm::mat4& viewProj, const glm::vec3& eye, float nearPlane, glm::uvec2 screen,
                                 uint32_t atlasSize) {

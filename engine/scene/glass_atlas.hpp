@@ -67,6 +67,12 @@ GlassAtlasLayout packGlassAtlas(const std::vector<Reflector>& reflectors, const 
                                 const glm::mat4& viewProj, const glm::vec3& eye, float nearPlane, glm::uvec2 screen,
                                 uint32_t atlasSize);
 
+// The atlas texels the glass passes define, as half-open texel rectangles clipped to the atlas: each
+// region grown by a one-texel ring (it lies in the gutter: kGlassAtlasGutter ≥ 1), which is all the
+// glass pass's bilinear taps read. PPR's resolve writes exactly these and leaves the rest of its
+// reflection atlas as it finds it (glass_reflect.comp); a readback keeps only these.
+std::vector<ScreenRect> glassAtlasDefinedRects(const std::vector<GlassRegion>& regions, uint32_t atlasSize);
+
 // Screen pixel ↔ atlas texel coordinates of a region: atlasOrigin + (p − screen.x0y0) · scale, and back.
 glm::vec2 atlasFromScreen(const GlassRegion& region, glm::vec2 screenPixel);
 glm::vec2 screenFromAtlas(const GlassRegion& region, glm::vec2 atlasTexel);

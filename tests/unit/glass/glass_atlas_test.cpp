@@ -444,3 +444,39 @@ TEST(GlassAtlas, AtlasFromScreenRoundTrip) {
     EXPECT_EQ(atlasFromScreen(r, {51.5f, 61.5f}), glm::vec2(101.5f, 201.5f));
     EXPECT_EQ(screenFromAtlas(r, {101.5f, 201.5f}), glm::vec2(51.5f, 61.5f));
 }
+
+// PPR's resolve writes each region and a one-texel ring around it and nothing else; the ring must
+// stay out of every other region (it lies in the packer's gutter) and be clipped to the atlas.
+TEST(GlassAtlas, DefinedTexelsAreTheRegionsAndTheirRings) {
+    std::mt19937 rng(29u);
+    std::uniform_int_distribution<int> side(1, 90), count(1, 16);
+    int rings = 0, clipped = 0;
+    for (int c = 0; c < 400; ++c) {
+        std::vector<glm::ivec2> sizes(size_t(count(rng)));
+        for (glm::ivec2& s : sizes) s = {side(rng), side(rng)};
+        const auto origins = packRects(sizes, 256);
+        if (!origins) continue;
+        std::vector<GlassRegion> regions(sizes.size());
+        for (size_t i = 0; i < sizes.size(); ++i) {
+            regions[i].atlasOrigin = (*origins)[i];
+            regions[i].atlasSize = sizes[i];
+        }
+        const std::vector<ScreenRect> defined = glassAtlasDefinedRects(regions, 256);
+        ASSERT_EQ(defined.size(), regions.size());
+        for (size_t i = 0; i < regions.size(); ++i) {
+            const glm::ivec2 lo = regions[i].atlasOrigin, hi = lo + regions[i].atlasSize;
+            const ScreenRect& d = defined[i];
+            EXPECT_EQ(d, (ScreenRect{std::max(lo.x - 1, 0), std::max(lo.y - 1, 0), std::min(hi.x + 1, 256), std::min(hi.y + 1, 256)}));
+            clipped += d.x0 == lo.x || d.y0 == lo.y || d.x1 == hi.x || d.y1 == hi.y;
+            ++rings;
+            for (size_t k = 0; k < regions.size(); ++k) {
+                if (k == i) continue;
+                const glm::ivec2 klo = regions[k].atlasOrigin, khi = klo + regions[k].atlasSize;
+                const bool overlaps = d.x0 < khi.x && klo.x < d.x1 && d.y0 < khi.y && klo.y < d.y1;
+                EXPECT_FALSE(overlaps) << "case " << c << ": region " << i << "'s ring reaches into region " << k;
+            }
+        }
+    }
+    EXPECT_GT(rings, 1000);
+    EXPECT_GT(clipped, 100) << "regions on the atlas's edges";
+}
