@@ -33,7 +33,7 @@ const uint kSummaries = 2u * kPprCullChunkCount;
 shared uint sumLoX[kSummaries], sumLoY[kSummaries], sumHiX[kSummaries], sumHiY[kSummaries];
 shared uvec3 sumBoxLo[kPprCullChunkCount], sumBoxHi[kPprCullChunkCount];
 shared uint sumPlaneLo[kSummaries], sumPlaneHi[kSummaries], sumGlass[kSummaries];
-shared uint unplaned;  // candidates in no cull plane
+shared uint untabled;  // candidates beyond the cull-plane tables
 
 void addToSummary(uint slot, uvec2 rect, ReflectorData reflector) {
     atomicMin(sumLoX[slot], rect.x & 0xFFFFu);
@@ -47,7 +47,7 @@ void addToSummary(uint slot, uvec2 rect, ReflectorData reflector) {
 
 void addToPlane(uint plane, uvec2 rect, uvec3 boxLo, uvec3 boxHi) {
     if (plane == kPprNoCullPlane) {
-        atomicAdd(unplaned, 1u);
+        atomicAdd(untabled, 1u);
         return;
     }
     atomicMin(cullPlaneBounds[plane].loX, rect.x & 0xFFFFu);
@@ -90,7 +90,7 @@ void main() {
     }
     for (uint p = lid; p < pc.cullPlaneCount; p += kPprBoundsGroupSize)
         cullPlaneBounds[p] = PprCullPlaneBounds(0xFFFFu, 0xFFFFu, 0u, 0u, uvec3(0xFFFFFFFFu), 0u, uvec3(0u), 0u);
-    if (lid == 0u) unplaned = 0u;
+    if (lid == 0u) untabled = 0u;
     memoryBarrierBuffer();  // the planes' bounds are reduced in place below
     barrier();
     // Inclusive scan of the runs' counts (Hillis–Steele: log2 of the group size steps).
@@ -140,7 +140,7 @@ void main() {
         cullChunks[slot] = chunk;
     }
     if (lid == kPprBoundsGroupSize - 1u) {
-        visibleCounts = PprVisibleCounts(total & 0xFFFFu, total >> 16u, unplaned, 0u);
+        visibleCounts = PprVisibleCounts(total & 0xFFFFu, total >> 16u, untabled, 0u);
         stats.reflectorsReflecting = total & 0xFFFFu;
         stats.reflectorsOnScreen = total >> 16u;
     }

@@ -240,7 +240,7 @@ PPR_BEGIN
 struct PprVisibleCounts {
     uint reflecting;
     uint onScreen;
-    uint unplaned;  // reflecting reflectors in no cull plane (kPprNoCullPlane)
+    uint untabled;  // reflecting reflectors beyond the cull-plane tables (kPprNoCullPlane)
     uint pad0;
 };
 PPR_END
@@ -290,9 +290,11 @@ PPR_SIZE_CHECK(PprCullPlaneBounds, 48);
 // the counts, the candidates' chunk summaries, the on-screen list's, the cull planes' bounds, then the
 // two lists.
 #ifndef __cplusplus
-#define PPR_VISIBLE_REFLECTORS                                                                                  \
-    PprVisibleCounts visibleCounts; PprCullChunk cullChunks[2u * kPprCullChunkCount];                         \
-    PprCullPlaneBounds cullPlaneBounds[kPprMaxCullPlanes]; uint visibleLists[]
+#define PPR_VISIBLE_REFLECTORS                                                      \
+    PprVisibleCounts visibleCounts;                                                 \
+    PprCullChunk cullChunks[2u * kPprCullChunkCount];                               \
+    PprCullPlaneBounds cullPlaneBounds[kPprMaxCullPlanes];                          \
+    uint visibleLists[]
 #endif
 PPR_CONST(uint, kPprVisibleListsOffset, 16u + 40u * 2u * kPprCullChunkCount + 48u * kPprMaxCullPlanes)  // bytes before visibleLists
 

@@ -121,7 +121,7 @@ bool reachesAReflector(vec3 boxLo, vec3 boxHi, uint lane) {
 // tile's mirror image meet the union of the plane's screen rectangles, and its hit region the union
 // of their world boxes? Coarser, but its cost per tile does not grow with the reflector count.
 bool reachesAPlane(vec3 boxLo, vec3 boxHi, uint lane) {
-    if (visibleCounts.unplaned != 0u) return true;  // judged on its own rectangle: it keeps every tile
+    if (visibleCounts.untabled != 0u) return true;  // judged on its own rectangle: it keeps every tile
     for (uint plane = lane; plane < pc.cullPlaneCount; plane += kLanes) {
         PprCullPlaneBounds merged = cullPlaneBounds[plane];
         if (merged.loX > merged.hiX) continue;  // no reflecting rectangle in this plane
