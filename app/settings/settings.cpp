@@ -148,7 +148,7 @@ const std::vector<SettingDecl>& settingDecls() {
                "PPR per-tile reflector culling in the projection pass (0: every reflector per pixel)"),
         widthSetting("project_threads", "ppr", [](FrameSettings& s) -> uint32_t& { return s.ppr.projectThreads; }, passes::kProjectThreadChoices,
                      "PPR projection pass: invocations per 16x16 tile (auto: 32 on a CPU device, where barriers cost per "
-                     "invocation; 128 on a GPU); the same images with any"),
+                     "invocation; 256 on a GPU); the same images with any"),
         widthSetting("reach_threads", "ppr", [](FrameSettings& s) -> uint32_t& { return s.ppr.reachThreads; }, passes::kReachThreadChoices,
                      "PPR reach pass (with tiles=1 indirect=1: the tiles the projection runs on): invocations per 16x16 tile "
                      "(auto: 1 on a CPU device, 16 on a GPU); the same tiles with any"),
