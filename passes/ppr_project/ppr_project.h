@@ -36,8 +36,8 @@ PPR_CONST(float, kPprSplatOutline, 0.25f)
 // On a GPU more invocations share the culling and the per-pixel work: H100, 1920x1080, medians of
 // 2 interleaved runs: 32 -> 0.163 ms, 64 -> 0.133, 128 -> 0.116, 256 -> 0.163. Since the projection
 // reads each survivor once per invocation for all its pixels, one pixel each wins there: H200,
-// 2026-11-29, 1920x1080 / 3840x2160: 64 -> 0.103 / 0.247 ms, 128 -> 0.078 / 0.205,
-// 256 -> 0.066 / 0.181 (docs/performance.md).
+// 2026-11-29, 1920x1080 / 3840x2160: 64 -> 0.103 / 0.247 ms, 128 -> 0.076 / 0.204,
+// 256 -> 0.066 / 0.182 (docs/performance.md).
 PPR_CONST(uint, kPprProjectThreads, 32u)
 PPR_CONST(uint, kPprProjectThreadsGpu, 256u)
 
