@@ -22,6 +22,7 @@ passes::TaaReflectionInputs taaReflectionInputs(const graph::Blackboard& board, 
     r.mode = static_cast<uint32_t>(settings.taa.reproject);
     r.average = settings.taa.average;
     r.stillSpread = settings.taa.stillSpread;
+    r.motionCap = settings.taa.reflectionCap;
     r.threads = settings.taa.threads;
     return r;
 }

@@ -219,6 +219,10 @@ const std::vector<SettingDecl>& settingDecls() {
                "taa=1, taa_average=1: the frame's history keeps at most 0.7 of itself wherever it was fetched between texels "
                "(ramping back to 1 within a tenth of a texel of a centre), so a moving view does not soften a little more with "
                "every frame's Catmull-Rom fetch (a still view is unchanged; 0: the feedback alone)"),
+        toggle("taa_reflection_cap", "taa", [](FrameSettings& s) -> bool& { return s.taa.reflectionCap; }, false,
+               "taa=1, taa_average=1: the motion cap on the reflection's own history too (taa.reflection): sharper "
+               "reflections under motion for every reproject mode, and the most for surface, whose misplaced history it also "
+               "drops sooner (a still view is unchanged; 0: the reflection's history keeps the feedback alone)"),
         toggle("taa_still_spread", "taa", [](FrameSettings& s) -> bool& { return s.taa.stillSpread; }, true,
                "taa=1, taa_average=1: a still pixel whose run holds 4 frames or more keeps its history unclipped while the "
                "frame's luma lies within 2.5 standard deviations of the luma its own run has shown, so an edge the jitter "

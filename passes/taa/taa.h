@@ -30,6 +30,8 @@ PPR_CONST(float, kTaaStillSamples, 16.0f)
 // 0.97 the softening of a dozen frames adds up, small offsets included; a still pixel (f = 0) and
 // whole-pixel motion keep the feedback. (The proportional cap, 1 − this × 4f(1 − f), scored the same
 // under a strafe and 0.2–0.4 dB lower under an orbit, docs/temporal.md.)
+// taa_reflection_cap=1 applies it to the reflection's own history too (taa.reflection; off by default: it
+// lifts the surface's-motion reprojection more than the virtual point's, docs/temporal.md).
 PPR_CONST(float, kTaaMotionCap, 0.3f)
 // taa_still_spread=1 (with taa_average=1): a still pixel whose run holds at least kTaaSpreadSamples
 // frames keeps its history unclipped while the frame's luma lies within kTaaSpreadSigma standard
@@ -62,9 +64,10 @@ struct TaaReflectionPush {
     uint mode;         // kReproject*
     uint hasDistance;  // 0: the technique gave no path lengths; candidates and virtual use the surface's motion
     float stillSpread;  // taa_still_spread with taa_average: kTaaSpreadSigma, or 0 (off: the 3×3 box alone; the moments image is a stand-in)
+    float motionCap;    // taa_reflection_cap with taa_average: kTaaMotionCap, or 0 (off: the feedback alone)
 };
 PPR_END
-PPR_SIZE_CHECK(TaaReflectionPush, 16);
+PPR_SIZE_CHECK(TaaReflectionPush, 20);
 
 PPR_BEGIN
 struct TaaPush {

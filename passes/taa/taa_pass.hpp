@@ -19,6 +19,7 @@ struct TaaReflectionInputs {
     uint32_t mode = 0;                           // taa.h kReproject*
     bool average = true;                         // taa_average (taa.h kTaaStillSamples)
     bool stillSpread = true;                     // taa_still_spread (taa.h kTaaSpreadSigma)
+    bool motionCap = false;                      // taa_reflection_cap (taa.h kTaaMotionCap)
     uint32_t threads = 0;                        // taa_threads: invocations per tile (taa_threads.hpp); 0: the device's default
 };
 

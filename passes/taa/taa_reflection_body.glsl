@@ -154,7 +154,7 @@ void resolvePixel(ivec2 pix) {
         if (hadReflection && !disoccluded) {
 #ifdef PPR_TAA_AVERAGE
             HistoryBlend blend = blendHistory(currentY, toYCoCg(compress(history.rgb)), mean, sigma, historyUv, historySamples, historySpread,
-                                              pc.stillSpread > 0.0, 1.0, stillSpread);
+                                              pc.stillSpread > 0.0, motionFeedbackCap(historyUv, pc.motionCap), stillSpread);
             vec3 h = blend.history;
             float feedback = blend.feedback;
             samples = blend.samples;
