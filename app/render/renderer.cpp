@@ -23,6 +23,7 @@ passes::TaaReflectionInputs taaReflectionInputs(const graph::Blackboard& board, 
     r.average = settings.taa.average;
     r.stillSpread = settings.taa.stillSpread;
     r.motionCap = settings.taa.reflectionCap;
+    r.rimKeep = settings.taa.rimKeep;
     r.threads = settings.taa.threads;
     return r;
 }

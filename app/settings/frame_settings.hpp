@@ -61,6 +61,7 @@ struct TaaSettings {         // owner: taa (passes/taa)
     bool average;            // histories count their frames: equal shares after a reset; a still pixel keeps the jitter cycle's mean
     bool motionCap;          // with average: the frame's history keeps less of itself where it was fetched between texels
     bool reflectionCap;      // with average: the same cap on the reflection's own history (off by default: docs/temporal.md)
+    bool rimKeep;            // with average: a moving pixel the jitter takes off a reflector keeps its reflection's history
     bool stillSpread;        // with average: a still pixel's own spread over its run, not only the 3×3 box, decides a clip
     uint32_t threads;        // both resolves' invocations per 16x16 tile (passes/taa/taa_threads.hpp); 0: auto
 };

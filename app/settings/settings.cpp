@@ -223,6 +223,10 @@ const std::vector<SettingDecl>& settingDecls() {
                "taa=1, taa_average=1: the motion cap on the reflection's own history too (taa.reflection): sharper "
                "reflections under motion for every reproject mode, and the most for surface, whose misplaced history it also "
                "drops sooner (a still view is unchanged; 0: the reflection's history keeps the feedback alone)"),
+        toggle("taa_rim_keep", "taa", [](FrameSettings& s) -> bool& { return s.taa.rimKeep; }, true,
+               "taa=1, taa_average=1: a pixel that the jitter takes off a reflector's rim while the view moves keeps its "
+               "reflection's history (fetched where its surface was, from the texels there that held one) for the frames "
+               "that bring the reflection back, as a still pixel does (0: only a still pixel keeps it)"),
         toggle("taa_still_spread", "taa", [](FrameSettings& s) -> bool& { return s.taa.stillSpread; }, true,
                "taa=1, taa_average=1: a still pixel whose run holds 4 frames or more keeps its history unclipped while the "
                "frame's luma lies within 2.5 standard deviations of the luma its own run has shown, so an edge the jitter "

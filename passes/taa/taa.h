@@ -65,9 +65,10 @@ struct TaaReflectionPush {
     uint hasDistance;  // 0: the technique gave no path lengths; candidates and virtual use the surface's motion
     float stillSpread;  // taa_still_spread with taa_average: kTaaSpreadSigma, or 0 (off: the 3×3 box alone; the moments image is a stand-in)
     float motionCap;    // taa_reflection_cap with taa_average: kTaaMotionCap, or 0 (off: the feedback alone)
+    uint rimKeep;       // taa_rim_keep with taa_average: a moving pixel without a reflection keeps its history (1) or not (0)
 };
 PPR_END
-PPR_SIZE_CHECK(TaaReflectionPush, 20);
+PPR_SIZE_CHECK(TaaReflectionPush, 24);
 
 PPR_BEGIN
 struct TaaPush {

@@ -60,6 +60,7 @@ TaaReflectionOutput TaaPass::addReflection(graph::RenderGraph& g, const FrameInp
     push.hasDistance = inputs.distance ? 1u : 0u;
     push.stillSpread = inputs.stillSpread ? gpu::kTaaSpreadSigma : 0.0f;
     push.motionCap = inputs.motionCap ? gpu::kTaaMotionCap : 0.0f;
+    push.rimKeep = inputs.rimKeep ? 1u : 0u;
     const VkSampler nearest = in.samplers->nearestClamp;
     graph::ImageHandle shown, written;
     ComputePass pass(g, ctx_, "taa.reflection", reflectionPipelines_[inputs.average ? 1 : 0].get(inputs.threads));

@@ -20,6 +20,7 @@ struct TaaReflectionInputs {
     bool average = true;                         // taa_average (taa.h kTaaStillSamples)
     bool stillSpread = true;                     // taa_still_spread (taa.h kTaaSpreadSigma)
     bool motionCap = false;                      // taa_reflection_cap (taa.h kTaaMotionCap)
+    bool rimKeep = true;                         // taa_rim_keep (TaaReflectionPush::rimKeep)
     uint32_t threads = 0;                        // taa_threads: invocations per tile (taa_threads.hpp); 0: the device's default
 };
 

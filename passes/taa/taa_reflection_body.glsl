@@ -36,6 +36,32 @@ layout(push_constant, scalar) uniform Push { TaaReflectionPush pc; };
 // A history texel with alpha below this had no reflection, or one of unknown depth.
 const float kKnownDepth = 1e-2;
 
+#ifdef PPR_TAA_AVERAGE
+// The reflection's history at `uv` blended bilinearly from those of its four texels that held one (alpha
+// above 0), and the frames it holds; alpha 0 where none did. A rim's texels border others without a
+// reflection, whose zeros a plain bilinear fetch would blend in.
+void keptHistory(vec2 uv, out vec4 history, out float samples) {
+    vec2 pos = uv * frame.screenSize - 0.5;
+    ivec2 base = ivec2(floor(pos));
+    vec2 f = pos - floor(pos);
+    vec4 sum = vec4(0.0);
+    float frames = 0.0, weight = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        ivec2 o = ivec2(i & 1, i >> 1);
+        ivec2 texel = clamp(base + o, ivec2(0), ivec2(frame.screenSize) - 1);
+        vec4 h = texelFetch(historyTex, texel, 0);
+        if (h.a <= 0.0) continue;
+        vec2 w2 = mix(1.0 - f, f, vec2(o));
+        float w = w2.x * w2.y;
+        sum += w * h;
+        frames += w * texelFetch(historySamples, texel, 0).x;
+        weight += w;
+    }
+    history = weight > 0.0 ? sum / weight : vec4(0.0);
+    samples = weight > 0.0 ? frames / weight : 0.0;
+}
+#endif
+
 // Resolves one pixel (main: the invocation's column of its tile).
 void resolvePixel(ivec2 pix) {
     ivec2 size = ivec2(frame.screenSize);
@@ -44,8 +70,11 @@ void resolvePixel(ivec2 pix) {
     if (current.a == kReflectionNone) {
         imageStore(outShown, pix, current);
 #ifdef PPR_TAA_AVERAGE
-        // A still pixel that the jitter takes off a reflector's rim keeps its reflection's history (and
-        // its still run) for the frames that bring the reflection back.
+        // A pixel that the jitter takes off a reflector's rim keeps its reflection's history (and, still,
+        // its still run) for the frames that bring the reflection back. Still, that is its own texel; in
+        // motion (taa_rim_keep), the history where its surface was, blended from the texels there that
+        // held a reflection: otherwise a rim pixel's reflection (often a thin band of what stands on the
+        // reflector's edge) starts again from one jittered frame, or from a neighbour's, every time.
         // The counts are read first, being half the history's size: a history that holds frames (x > 0)
         // holds a reflection. Its still run's moments are kept with it.
         vec4 kept = vec4(0.0);
@@ -53,7 +82,12 @@ void resolvePixel(ivec2 pix) {
         if (pc.historyValid != 0u && keptSamples.x > 0.0) {
             float prevW;
             vec2 historyUv = previousUv((vec2(pix) + 0.5) * frame.invScreenSize, texelFetch(depthTex, pix, 0).r, prevW);
-            if (prevW > 0.0 && atTexelCentre(historyUv)) kept = texelFetch(historyTex, pix, 0);
+            if (prevW > 0.0 && atTexelCentre(historyUv)) {
+                kept = texelFetch(historyTex, pix, 0);
+            } else if (pc.rimKeep != 0u && prevW > 0.0 && all(greaterThanEqual(historyUv, vec2(0.0))) && all(lessThanEqual(historyUv, vec2(1.0)))) {
+                keptSamples = vec2(0.0);  // moving: no still run
+                keptHistory(historyUv, kept, keptSamples.x);
+            }
         }
         if (kept.a <= 0.0) keptSamples = vec2(0.0);
         imageStore(outHistory, pix, kept);
