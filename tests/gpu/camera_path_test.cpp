@@ -80,7 +80,7 @@ TEST(CameraPathRun, CompareScoresEveryFrameOfAStrafe) {
 // supersampled reference under a strafe than fetched by the surface's motion or the seed note's
 // candidates. Every row is one shot from the same jitter sample, so frame 0 is the same picture.
 // Measured on lavapipe at this size (16 frames, taa_average=1, taa_motion_cap=1, taa_still_spread=1):
-// surface 32.68, candidates 32.17, virtual 32.88 dB (no AA 30.7; 32.58, 32.08, 32.83 before taa_rim_keep). The whole-colour frame TAA
+// surface 32.70, candidates 32.19, virtual 32.89 dB (no AA 30.7; 32.58, 32.08, 32.83 before taa_rim_keep). The whole-colour frame TAA
 // (taa_split=0) is not ranked here: without the motion cap the split led it by 0.46 dB (32.85 against
 // 32.39), with the cap it scores 32.87 (docs/temporal.md, Measured). At 160x90 the order of candidates
 // and virtual flips: too few pixels per ripple.
@@ -102,8 +102,8 @@ TEST(CameraPathRun, VirtualReprojectionBeatsSurfaceAndCandidatesOnReflectorsUnde
 // 0.97 the softening of a dozen frames adds up: under a strafe the frame's TAA scored no better than no
 // AA. taa_motion_cap=1 keeps at most 0.7 of such a history (1 within a tenth of a texel of a centre),
 // which a still view (history at texel centres) never reaches, so a still path renders the same frames
-// either way. Measured on lavapipe at this size (mirror, 16 frames, whole frame): 33.61 dB against
-// 33.24 (before taa_rim_keep 33.27 against 32.86; 32 frames: 33.44 against 32.50; the first frames,
+// either way. Measured on lavapipe at this size (mirror, 16 frames, whole frame): 33.65 dB against
+// 33.28 (before taa_rim_keep 33.27 against 32.86; 32 frames: 33.44 against 32.50; the first frames,
 // with equal shares, gain least).
 TEST(CameraPathRun, MotionCapKeepsAMovingViewSharpAndAStillViewUnchanged) {
     auto dir = tempDir("path-motion-cap");
@@ -120,7 +120,7 @@ TEST(CameraPathRun, MotionCapKeepsAMovingViewSharpAndAStillViewUnchanged) {
 
 // taa_reflection_cap=1 puts the same cap on the reflection's own history: a reflection fetched between
 // texels under motion softens less, and a still view's frames are those without it. Measured on lavapipe
-// at this size (mirror, strafe, 16 frames, reflector pixels): virtual 29.88 dB against 29.46 (29.62
+// at this size (mirror, strafe, 16 frames, reflector pixels): virtual 29.89 dB against 29.57 (29.62
 // against 29.32 before taa_rim_keep); surface 29.37 against 27.95 before it (it also drops a misplaced
 // history sooner; docs/temporal.md).
 TEST(CameraPathRun, ReflectionCapSharpensAMovingReflectionAndLeavesAStillViewUnchanged) {
@@ -139,7 +139,7 @@ TEST(CameraPathRun, ReflectionCapSharpensAMovingReflectionAndLeavesAStillViewUnc
 // bring the reflection back, instead of restarting it from one jittered frame or showing a neighbour's.
 // On the wall mirror that is the thin band of the frame's reflection along its top edge. A still view
 // keeps its own texel either way, so its frames are the same. Measured on lavapipe at this size (mirror,
-// strafe, 16 frames): whole frame 33.61 dB against 33.27, reflector pixels 29.46 against 29.32 (the
+// strafe, 16 frames): whole frame 33.65 dB against 33.27, reflector pixels 29.57 against 29.32 (the
 // frame's pixels beside the rim, which showed a neighbour's reflection, gain the most).
 TEST(CameraPathRun, RimKeepHoldsAReflectorEdgesReflectionUnderMotionAndLeavesAStillViewUnchanged) {
     auto dir = tempDir("path-rim-keep");
@@ -157,7 +157,7 @@ TEST(CameraPathRun, RimKeepHoldsAReflectorEdgesReflectionUnderMotionAndLeavesASt
 
 // The ray-traced reference gives its path lengths too (eye → reflector → hit), so its reflection
 // history finds the virtual point instead of falling back to the surface's motion. Measured on lavapipe:
-// surface 32.69, virtual 32.90 dB (32.59, 32.85 before taa_rim_keep; 32.60, 32.87 without the motion cap). At 160x90 over 8 frames, where the equal shares of a history's
+// surface 32.71, virtual 32.90 dB (32.59, 32.85 before taa_rim_keep; 32.60, 32.87 without the motion cap). At 160x90 over 8 frames, where the equal shares of a history's
 // first frames (taa_average=1) weigh most, surface led (29.82 against 29.51).
 TEST(CameraPathRun, RaytracedReflectionsReprojectThroughTheirVirtualPoint) {
     PPR_SKIP_WITHOUT_RAY_QUERY();
@@ -173,7 +173,7 @@ TEST(CameraPathRun, RaytracedReflectionsReprojectThroughTheirVirtualPoint) {
 // With taa_split=0 the frame's history holds the whole colour, and the frame's TAA mixes a reflector
 // pixel's history fetch at its reflection's motion in by the composite's reflection weight
 // (reproject=virtual): on the wall mirror, whose colour is mostly its reflection, that is most of what
-// virtual gains over surface under a strafe there. Measured on lavapipe at this size: +1.87 dB with the
+// virtual gains over surface under a strafe there. Measured on lavapipe at this size: +1.88 dB with the
 // mix (+1.80 before taa_rim_keep, +1.73 without the motion cap, +2.17 before the reflection history's silhouette rule), +0.99
 // with the reflection's own history alone.
 TEST(CameraPathRun, FrameTaaFollowsTheReflectionOnAMirror) {
