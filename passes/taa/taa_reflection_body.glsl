@@ -38,14 +38,14 @@ const float kKnownDepth = 1e-2;
 
 #ifdef PPR_TAA_AVERAGE
 // The reflection's history at `uv` blended bilinearly from those of its four texels that held one (alpha
-// above 0), and the frames it holds; alpha 0 where none did. A rim's texels border others without a
-// reflection, whose zeros a plain bilinear fetch would blend in.
-void keptHistory(vec2 uv, out vec4 history, out float samples) {
+// above 0); alpha 0 where none did. A rim's texels border others without a reflection, whose zeros a
+// plain bilinear fetch would blend in.
+vec4 keptHistory(vec2 uv) {
     vec2 pos = uv * frame.screenSize - 0.5;
     ivec2 base = ivec2(floor(pos));
     vec2 f = pos - floor(pos);
     vec4 sum = vec4(0.0);
-    float frames = 0.0, weight = 0.0;
+    float weight = 0.0;
     for (int i = 0; i < 4; ++i) {
         ivec2 o = ivec2(i & 1, i >> 1);
         ivec2 texel = clamp(base + o, ivec2(0), ivec2(frame.screenSize) - 1);
@@ -54,11 +54,9 @@ void keptHistory(vec2 uv, out vec4 history, out float samples) {
         vec2 w2 = mix(1.0 - f, f, vec2(o));
         float w = w2.x * w2.y;
         sum += w * h;
-        frames += w * texelFetch(historySamples, texel, 0).x;
         weight += w;
     }
-    history = weight > 0.0 ? sum / weight : vec4(0.0);
-    samples = weight > 0.0 ? frames / weight : 0.0;
+    return weight > 0.0 ? sum / weight : vec4(0.0);
 }
 #endif
 
@@ -85,10 +83,11 @@ void resolvePixel(ivec2 pix) {
             if (prevW > 0.0 && atTexelCentre(historyUv)) {
                 kept = texelFetch(historyTex, pix, 0);
             } else if (pc.rimKeep != 0u && prevW > 0.0 && all(greaterThanEqual(historyUv, vec2(0.0))) && all(lessThanEqual(historyUv, vec2(1.0)))) {
-                // A stand-in, counted as one frame: the frame that brings the reflection back gets an equal
-                // share (holding its frames, the mirror's strafe scored 0.11 dB lower). Moving: no still run.
-                keptHistory(historyUv, kept, keptSamples.x);
-                keptSamples = vec2(min(keptSamples.x, 1.0), 0.0);
+                // A stand-in, counted as one frame (a texel with a reflection holds at least one): the frame
+                // that brings the reflection back gets an equal share (holding the texels' frames, the
+                // mirror's strafe scored 0.11 dB lower). Moving: no still run.
+                kept = keptHistory(historyUv);
+                keptSamples = vec2(1.0, 0.0);
             }
         }
         if (kept.a <= 0.0) keptSamples = vec2(0.0);
