@@ -52,6 +52,12 @@ struct GlassSettings {       // owner: glass (PPR's glass atlas and the planar r
     uint32_t atlas;          // texels per side
 };
 
+// How the ray-traced reference decides a flat mirror pixel at a silhouette (passes/raytrace/raster_coverage.glsl).
+enum class RtCoverage : uint32_t { Exact, Raster };
+struct RaytraceSettings {    // owner: raytraced (the ray-traced reference)
+    RtCoverage coverage;     // exact: the triangle the ray meets; raster: as the planar reference's rasterizer snaps it
+};
+
 enum class Reproject : uint32_t { Surface, Candidates, Virtual };  // values = taa.h kReproject*
 
 struct TaaSettings {         // owner: taa (passes/taa)
@@ -73,6 +79,7 @@ struct FrameSettings {
     SsrSettings ssr;
     GlassSettings glass;
     EnvSettings env;
+    RaytraceSettings raytrace;
     TaaSettings taa;
 };
 

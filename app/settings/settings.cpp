@@ -174,6 +174,11 @@ const std::vector<SettingDecl>& settingDecls() {
         toggle("contact", "ppr", [](FrameSettings& s) -> bool& { return s.ppr.contact; }, true,
                "holes=1: 4 depth-tested taps (2, 4, 8, 16 px) from each reflector pixel toward the point it reflects find "
                "what the main view hides in between, such as the underside of an object standing on the reflector (0: off)"),
+        choice<RtCoverage>("rt_coverage", "raytraced", [](FrameSettings& s) -> RtCoverage& { return s.raytrace.coverage; }, {"exact", "raster"},
+                           "exact",
+                           "ray-traced reference with normalmap=off, and its glass atlas: at silhouettes the triangle the ray meets "
+                           "(exact), or the one the planar reference's rasterizer shows there, its vertices snapped to the device's "
+                           "sub-pixel grid (raster: 9 rays a pixel, 25 near an edge; proves the two references agree, docs/raytraced.md)"),
         toggle("fallback_env", "env", [](FrameSettings& s) -> bool& { return s.env.fallback; }, false,
                "reflections that leave the screen or find nothing show the environment (env_source), blended in near the screen edges (0: black)"),
         choice<EnvSource>("env_source", "env", [](FrameSettings& s) -> EnvSource& { return s.env.source; }, {"sky", "probe"}, "probe",

@@ -25,6 +25,7 @@ passes::RaytraceInputs RaytracedTechnique::inputs(TechniqueFrame& f) const {
     rt.shadowMap = f.shadowMap;
     rt.reflectors = f.reflectorData();
     rt.tlas = structures_->tlas();
+    rt.rasterCoverage = f.settings.raytrace.coverage == RtCoverage::Raster;
     return rt;
 }
 

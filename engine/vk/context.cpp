@@ -178,6 +178,7 @@ std::unique_ptr<Context> Context::create(const ContextOptions& options) {
                                   std::to_string(VK_API_VERSION_MINOR(props.apiVersion)) + "." +
                                   std::to_string(VK_API_VERSION_PATCH(props.apiVersion));
     ctx->info_.timestampPeriodNs = props.limits.timestampPeriod;
+    ctx->info_.subPixelPrecisionBits = props.limits.subPixelPrecisionBits;
 
     // One queue family that does graphics + compute (+ transfer implicitly).
     uint32_t familyCount = 0;

@@ -28,6 +28,7 @@ struct DeviceInfo {
     uint32_t apiVersion = 0;
     std::string apiVersionString;
     float timestampPeriodNs = 1.0f;
+    uint32_t subPixelPrecisionBits = 4;  // how finely the rasterizer snaps vertices (the ray-traced reference's rt_coverage=raster)
     uint32_t timestampValidBits = 0;
 };
 

@@ -271,8 +271,14 @@ bool passesAlphaMask(uint draw, uint prim, vec2 bary) {
 float traceHitT = 0.0;
 uint traceHitSlot = 0u;
 
-// The reflection seen along `dir` from `origin` (see shadeHit): the ray query's committed hit, shaded.
-vec4 traceReflection(ReflectorData plane, vec3 n, ivec2 pix, vec3 origin, vec3 dir, float eyeDistance) {
+// The nearest hit along `dir` from `origin` (the planar reference's clip respected, alpha masks
+// tested): false for none (the sky).
+struct RayHit {
+    uint draw, prim;
+    float t;
+    vec3 b;  // barycentrics (b0, b1, b2)
+};
+bool traceNearest(ReflectorData plane, vec3 origin, vec3 dir, out RayHit hit) {
     rayQueryEXT query;
     rayQueryInitializeEXT(query, tlas, gl_RayFlagsNoneEXT, 0xFFu, origin, clipT(plane, origin, dir), dir, 1e7);
     while (rayQueryProceedEXT(query)) {
@@ -281,13 +287,26 @@ vec4 traceReflection(ReflectorData plane, vec3 n, ivec2 pix, vec3 origin, vec3 d
                             uint(rayQueryGetIntersectionPrimitiveIndexEXT(query, false)), rayQueryGetIntersectionBarycentricsEXT(query, false)))
             rayQueryConfirmIntersectionEXT(query);
     }
-    traceHitT = 0.0;
-    traceHitSlot = 0u;
-    if (rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionTriangleEXT) return skyReflection(dir);
-    traceHitT = rayQueryGetIntersectionTEXT(query, true);
-    traceHitSlot = draws[rayQueryGetIntersectionInstanceCustomIndexEXT(query, true)].motionSlot;
+    hit = RayHit(0u, 0u, 0.0, vec3(1.0, 0.0, 0.0));
+    if (rayQueryGetIntersectionTypeEXT(query, true) != gl_RayQueryCommittedIntersectionTriangleEXT) return false;
     vec2 bary = rayQueryGetIntersectionBarycentricsEXT(query, true);
-    return shadeHit(plane, n, pix, origin, dir, eyeDistance, uint(rayQueryGetIntersectionInstanceCustomIndexEXT(query, true)),
-                    uint(rayQueryGetIntersectionPrimitiveIndexEXT(query, true)), rayQueryGetIntersectionTEXT(query, true),
-                    vec3(1.0 - bary.x - bary.y, bary.x, bary.y));
+    hit = RayHit(uint(rayQueryGetIntersectionInstanceCustomIndexEXT(query, true)), uint(rayQueryGetIntersectionPrimitiveIndexEXT(query, true)),
+                 rayQueryGetIntersectionTEXT(query, true), vec3(1.0 - bary.x - bary.y, bary.x, bary.y));
+    return true;
+}
+
+// The reflection of `hit` (or the sky along `dir` when `found` is false), shaded (see shadeHit); sets
+// traceHitT and traceHitSlot.
+vec4 reflectionOf(bool found, RayHit hit, ReflectorData plane, vec3 n, ivec2 pix, vec3 origin, vec3 dir, float eyeDistance) {
+    traceHitT = found ? hit.t : 0.0;
+    traceHitSlot = found ? draws[hit.draw].motionSlot : 0u;
+    if (!found) return skyReflection(dir);
+    return shadeHit(plane, n, pix, origin, dir, eyeDistance, hit.draw, hit.prim, hit.t, hit.b);
+}
+
+// The reflection seen along `dir` from `origin`: the nearest hit, shaded.
+vec4 traceReflection(ReflectorData plane, vec3 n, ivec2 pix, vec3 origin, vec3 dir, float eyeDistance) {
+    RayHit hit;
+    bool found = traceNearest(plane, origin, dir, hit);
+    return reflectionOf(found, hit, plane, n, pix, origin, dir, eyeDistance);
 }

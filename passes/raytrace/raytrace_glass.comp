@@ -3,6 +3,7 @@
 #include "common/bindings.glsl"
 #include "glass_forward/glass_forward.h"
 #include "raytrace/raytrace_common.glsl"
+#include "raytrace/raster_coverage.glsl"
 
 // The ray-traced reference for glass panes, in this frame's glass atlas layout (the layout PPR and the
 // planar reference write, so the glass forward pass blends it and compare scores it unchanged). A
@@ -39,7 +40,11 @@ void main() {
         ivec2 pix = ivec2(q);
         vec3 d = eyeRayDir(vec2(pix) + 0.5), origin;
         if (!onPlane(r, d, origin)) return;
-        imageStore(glassReflection, texel, traceReflection(r, r.normal, pix, origin, reflect(d, r.normal), distance(frame.cameraPos.xyz, origin)));
+        vec3 dir = reflect(d, r.normal);
+        float eyeDistance = distance(frame.cameraPos.xyz, origin);
+        imageStore(glassReflection, texel, (pc.flags & kRaytraceRasterCoverage) != 0u
+                                               ? rasterCoverageReflection(r, pix, origin, dir, eyeDistance, pc.subpixelBits)
+                                               : traceReflection(r, r.normal, pix, origin, dir, eyeDistance));
         return;
     }
 }

@@ -52,8 +52,10 @@ graph::ImageHandle RaytracePass::addScreen(graph::RenderGraph& g, const FrameInp
     const graph::ImageHandle distance =
         g.createImage(distanceOut ? "raytraced.distance" : "raytraced.distance.unused", {distanceSize.width, distanceSize.height, kReflectedPathFormat, 1});
     gpu::RaytracePush push{};
-    push.flags = (normalMapped ? gpu::kRaytraceNormalMapped : 0u) | (distanceOut ? gpu::kRaytraceWriteDistance : 0u);
+    push.flags = (normalMapped ? gpu::kRaytraceNormalMapped : 0u) | (distanceOut ? gpu::kRaytraceWriteDistance : 0u) |
+                 (rt.rasterCoverage ? gpu::kRaytraceRasterCoverage : 0u);
     push.looseCount = in.looseCount;
+    push.subpixelBits = ctx_.info().subPixelPrecisionBits;
     const Data& d = g.addPass<Data>(
         "raytraced.reflect", graph::QueueKind::Compute,
         [&](graph::PassBuilder& b, Data& data) {
@@ -92,8 +94,10 @@ graph::ImageHandle RaytracePass::addGlass(graph::RenderGraph& g, const FrameInpu
         graph::BufferHandle regions, regionList;
     };
     gpu::RaytracePush push{};
+    push.flags = rt.rasterCoverage ? gpu::kRaytraceRasterCoverage : 0u;
     push.looseCount = in.looseCount;
     push.regionCount = glass.regionCount;
+    push.subpixelBits = ctx_.info().subPixelPrecisionBits;
     const Data& d = g.addPass<Data>(
         "raytraced.glass", graph::QueueKind::Compute,
         [&](graph::PassBuilder& b, Data& data) {

@@ -2,6 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "common/bindings.glsl"
 #include "raytrace/raytrace_common.glsl"
+#include "raytrace/raster_coverage.glsl"
 
 // The ray-traced reference on screen: every reflector pixel (G-buffer reflector id != 0, the pixels
 // the planar reference resolves) traces its mirror ray and writes what it sees with its kind
@@ -49,7 +50,9 @@ void main() {
     vec2 path = vec2(0.0);  // reflected-path image (common/reflection.h): length, the hit's motion slot
     if (id != 0u && reflectorRay(pix, id, r, n, origin, dir)) {
         float eyeDistance = distance(frame.cameraPos.xyz, origin);
-        result = traceReflection(r, n, pix, origin, dir, eyeDistance);
+        bool raster = (pc.flags & (kRaytraceRasterCoverage | kRaytraceNormalMapped)) == kRaytraceRasterCoverage;
+        result = raster ? rasterCoverageReflection(r, pix, origin, dir, eyeDistance, pc.subpixelBits)
+                        : traceReflection(r, n, pix, origin, dir, eyeDistance);
         if (traceHitT > 0.0) path = vec2(eyeDistance + traceHitT, pathTag(traceHitSlot, 0u));
     }
     imageStore(reflection, pix, result);
