@@ -10,6 +10,7 @@
 // view, at the plane raised by kRaytraceClipOffset) covers the centre, with the top-left rule; the sky
 // when none does and some ray saw the sky. The screen pass (flat rays, normalmap=off) and the glass
 // atlas pass use it. Needs raytrace_common.glsl.
+#include "raytrace/raster_coverage.h"
 
 // Rings of 8 rays at 1/512, 1/256 and 1/128 pixel: snapping moves an edge by at most √2 / 2^9 pixel
 // with 8 sub-pixel bits, so a ray of some ring crosses any edge that may cover the centre (a sliver
@@ -30,19 +31,9 @@ bool snappedPosition(ReflectorData r, vec3 p, ivec2 pix, float unit, out ivec2 q
     q = ivec2(0);
     if (clip.w <= 0.0) return false;
     vec2 f = ((clip.xy / clip.w * 0.5 + 0.5) * frame.screenSize - (vec2(pix) + 0.5)) * unit;
-    if (any(greaterThan(abs(f), vec2(1e9)))) return false;
+    if (any(greaterThan(abs(f), vec2(1e9)))) return false;  // rasterCoversCentre: within 2^30
     q = ivec2(roundEven(f));
     return true;
-}
-
-// Sign of a.x b.y − a.y b.x, exactly (64-bit products).
-int crossSign(ivec2 a, ivec2 b) {
-    int hi1, lo1, hi2, lo2;
-    imulExtended(a.x, b.y, hi1, lo1);
-    imulExtended(a.y, b.x, hi2, lo2);
-    if (hi1 != hi2) return hi1 > hi2 ? 1 : -1;
-    if (lo1 == lo2) return 0;
-    return uint(lo1) > uint(lo2) ? 1 : -1;
 }
 
 // Does the triangle, clipped at the plane raised by kRaytraceClipOffset and snapped in the mirrored view,
@@ -54,7 +45,7 @@ bool rasterCovers(HitTriangle h, ReflectorData r, ivec2 pix, float unit, out boo
     float s[3];
     for (int i = 0; i < 3; ++i) s[i] = dot(p[i] - r.center, r.normal) - kRaytraceClipOffset;
     // Clipped to s >= 0: at most 4 corners.
-    ivec2 q[4];
+    ivec2 q[kRasterMaxCorners];
     int n = 0;
     for (int i = 0; i < 3; ++i) {
         int j = (i + 1) % 3;
@@ -68,25 +59,7 @@ bool rasterCovers(HitTriangle h, ReflectorData r, ivec2 pix, float unit, out boo
             ++n;
         }
     }
-    if (n < 3) return false;
-    // Orientation from the first three corners (a convex outline: all turn the same way).
-    vec2 e1 = vec2(q[1] - q[0]), e2 = vec2(q[2] - q[0]);
-    float area = e1.x * e2.y - e1.y * e2.x;
-    if (area == 0.0) return false;
-    int orient = area > 0.0 ? 1 : -1;
-    for (int i = 0; i < n; ++i) {
-        ivec2 a = q[i], b = q[(i + 1) % n];
-        // The edge function at the centre (the origin) is cross(a, b).
-        int e = crossSign(a, b) * orient;
-        if (e < 0) return false;
-        if (e == 0) {
-            // Top-left rule (y down): the edge, turned so that the inside is on its left, is a top edge
-            // (horizontal, inside below) or a left edge (going up).
-            ivec2 d = (b - a) * orient;
-            if (!((d.y == 0 && d.x > 0) || d.y < 0)) return false;
-        }
-    }
-    return true;
+    return rasterCoversCentre(q, n);
 }
 
 // The reflection at flat mirror pixel `pix` of reflector r, whose centre's ray is origin + t·dir, as the
