@@ -21,6 +21,15 @@ PPR_INLINE int rasterCrossSign(ivec2 a, ivec2 b) {
     return uint(lo1) > uint(lo2) ? 1 : -1;
 }
 
+// Which way the convex outline with corners q[0..n) turns: the first turn that is not straight (all
+// turn the same way in a convex outline; exact, since corner differences fit an int when the corners
+// lie within 2^30 of the centre). 0: degenerate.
+PPR_INLINE int rasterOrientation(ivec2 q[kRasterMaxCorners], int n) {
+    int orient = 0;
+    for (int i = 0; i < n && orient == 0; ++i) orient = rasterCrossSign(q[(i + 1) % n] - q[i], q[(i + 2) % n] - q[i]);
+    return orient;
+}
+
 // Does the convex outline with corners q[0..n) (fixed point, the pixel centre at the origin, y down)
 // cover the centre? An edge's function at the origin is cross(a, b); a centre on an edge counts only
 // for a top edge (horizontal, the inside below) or a left edge (the inside to its right), so of two
@@ -28,10 +37,7 @@ PPR_INLINE int rasterCrossSign(ivec2 a, ivec2 b) {
 // The corners must lie within 2^30 of the centre.
 PPR_INLINE bool rasterCoversCentre(ivec2 q[kRasterMaxCorners], int n) {
     if (n < 3) return false;
-    // Orientation: the first turn that is not straight (all turn the same way in a convex outline;
-    // exact, since corner differences fit an int when the corners lie within 2^30 of the centre).
-    int orient = 0;
-    for (int i = 0; i < n && orient == 0; ++i) orient = rasterCrossSign(q[(i + 1) % n] - q[i], q[(i + 2) % n] - q[i]);
+    int orient = rasterOrientation(q, n);
     if (orient == 0) return false;
     for (int i = 0; i < n; ++i) {
         ivec2 a = q[i], b = q[(i + 1) % n];
