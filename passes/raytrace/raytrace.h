@@ -8,9 +8,6 @@ PPR_CONST(uint, kRaytraceGroupSize, 8u)
 // Flags
 PPR_CONST(uint, kRaytraceNormalMapped, 1u)  // reflect about the G-buffer's normal-mapped normal, not the reflector's plane
 PPR_CONST(uint, kRaytraceWriteDistance, 2u)  // write each pixel's reflected path length (TAA's virtual point; 0 = none)
-// --set rt_coverage=raster: flat mirror pixels decide silhouettes as the planar reference's rasterizer does
-// (raster_coverage.glsl); off: the exact triangle a ray meets
-PPR_CONST(uint, kRaytraceRasterCoverage, 4u)
 // Hits closer to the reflector's plane than this (metres) are ignored: the planar reference's mirrored
 // views clip at the plane raised by the same distance (scene::mirrorView's clipOffset), so that
 // surfaces lying on the plane never reflect themselves.
@@ -21,7 +18,7 @@ struct RaytracePush {
     uint flags;        // kRaytrace*
     uint looseCount;   // reflectors no mesh belongs to, tested at each hit (gbuffer/gbuffer.h)
     uint regionCount;  // glass pass: entries of the region list
-    uint subpixelBits; // kRaytraceRasterCoverage: the device's subPixelPrecisionBits
+    uint subpixelBits; // rt_coverage=raster (the pipelines' constant kRasterCoverage): the device's subPixelPrecisionBits
 };
 PPR_END
 PPR_SIZE_CHECK(RaytracePush, 16);

@@ -11,6 +11,7 @@
 // from its reflecting side, in front of the opaque surface there, the ray of that pixel's centre is
 // reflected about the pane and traced. Other texels keep the atlas's clear value.
 layout(local_size_x = kRaytraceGroupSize, local_size_y = kRaytraceGroupSize) in;
+layout(constant_id = 0) const bool kRasterCoverage = false;  // rt_coverage=raster, as raytrace_reflect.comp
 layout(set = 0, binding = 11, scalar) readonly buffer Regions { GlassRegionData regions[]; };  // per reflector
 layout(set = 0, binding = 12, scalar) readonly buffer RegionList { uint regionReflectors[]; };
 layout(set = 0, binding = 13, rgba16f) uniform writeonly image2D glassReflection;
@@ -42,7 +43,7 @@ void main() {
         if (!onPlane(r, d, origin)) return;
         vec3 dir = reflect(d, r.normal);
         float eyeDistance = distance(frame.cameraPos.xyz, origin);
-        imageStore(glassReflection, texel, (pc.flags & kRaytraceRasterCoverage) != 0u
+        imageStore(glassReflection, texel, kRasterCoverage
                                                ? rasterCoverageReflection(r, pix, origin, dir, eyeDistance, pc.subpixelBits)
                                                : traceReflection(r, r.normal, pix, origin, dir, eyeDistance));
         return;

@@ -37,8 +37,11 @@ RaytracePass::RaytracePass(const vk::Context& ctx, const gpu::GpuScene& scene) :
     shader::PipelineLayoutDesc layout;
     layout.pushConstantBytes = sizeof(gpu::RaytracePush);
     layout.extraSets = {scene.textureSetLayout()};
-    screen_ = shader::createComputePipeline(ctx, PPR_SPIRV(raytrace_reflect_comp), layout, "raytraced.reflect");
-    glass_ = shader::createComputePipeline(ctx, PPR_SPIRV(raytrace_glass_comp), layout, "raytraced.glass");
+    for (uint32_t raster = 0; raster < 2; ++raster) {
+        const uint32_t specialization[] = {raster};
+        screen_[raster] = shader::createComputePipeline(ctx, PPR_SPIRV(raytrace_reflect_comp), layout, "raytraced.reflect", specialization);
+        glass_[raster] = shader::createComputePipeline(ctx, PPR_SPIRV(raytrace_glass_comp), layout, "raytraced.glass", specialization);
+    }
 }
 
 graph::ImageHandle RaytracePass::addScreen(graph::RenderGraph& g, const FrameInputs& in, const RaytraceInputs& rt, const GBuffer& gb,
@@ -52,8 +55,7 @@ graph::ImageHandle RaytracePass::addScreen(graph::RenderGraph& g, const FrameInp
     const graph::ImageHandle distance =
         g.createImage(distanceOut ? "raytraced.distance" : "raytraced.distance.unused", {distanceSize.width, distanceSize.height, kReflectedPathFormat, 1});
     gpu::RaytracePush push{};
-    push.flags = (normalMapped ? gpu::kRaytraceNormalMapped : 0u) | (distanceOut ? gpu::kRaytraceWriteDistance : 0u) |
-                 (rt.rasterCoverage ? gpu::kRaytraceRasterCoverage : 0u);
+    push.flags = (normalMapped ? gpu::kRaytraceNormalMapped : 0u) | (distanceOut ? gpu::kRaytraceWriteDistance : 0u);
     push.looseCount = in.looseCount;
     push.subpixelBits = ctx_.info().subPixelPrecisionBits;
     const Data& d = g.addPass<Data>(
@@ -68,17 +70,18 @@ graph::ImageHandle RaytracePass::addScreen(graph::RenderGraph& g, const FrameInp
             if (rt.tlasBuilt) b.accelerationStructureRead(*rt.tlasBuilt);
         },
         [this, in, rt, push](const Data& data, graph::PassContext& pc) {
+            const shader::Pipeline& pipeline = screen_[rt.rasterCoverage ? 1 : 0];
             VkCommandBuffer cmd = pc.cmd();
-            screen_.bind(cmd);
+            pipeline.bind(cmd);
             shader::PushDescriptors w(ctx_);
             commonWrites(w, in, rt, pc, data.depth, data.shadowMap)
                 .sampled(pc.view(data.normal), pc.layout(data.normal), in.samplers->nearestClamp)
                 .sampled(pc.view(data.reflector), pc.layout(data.reflector), in.samplers->nearestClamp)
                 .storageImage(pc.view(data.out))
                 .storageImage(pc.view(data.distance))
-                .push(cmd, screen_);
-            bindTextures(cmd, screen_, *in.scene);
-            screen_.pushConstants(cmd, push);
+                .push(cmd, pipeline);
+            bindTextures(cmd, pipeline, *in.scene);
+            pipeline.pushConstants(cmd, push);
             shader::dispatchCovering(cmd, in.extent, gpu::kRaytraceGroupSize);
         });
     if (distanceOut) *distanceOut = d.distance;
@@ -94,7 +97,6 @@ graph::ImageHandle RaytracePass::addGlass(graph::RenderGraph& g, const FrameInpu
         graph::BufferHandle regions, regionList;
     };
     gpu::RaytracePush push{};
-    push.flags = rt.rasterCoverage ? gpu::kRaytraceRasterCoverage : 0u;
     push.looseCount = in.looseCount;
     push.regionCount = glass.regionCount;
     push.subpixelBits = ctx_.info().subPixelPrecisionBits;
@@ -109,16 +111,17 @@ graph::ImageHandle RaytracePass::addGlass(graph::RenderGraph& g, const FrameInpu
             if (rt.tlasBuilt) b.accelerationStructureRead(*rt.tlasBuilt);
         },
         [this, in, rt, push, dispatch = glass.used](const Data& data, graph::PassContext& pc) {
+            const shader::Pipeline& pipeline = glass_[rt.rasterCoverage ? 1 : 0];
             VkCommandBuffer cmd = pc.cmd();
-            glass_.bind(cmd);
+            pipeline.bind(cmd);
             shader::PushDescriptors w(ctx_);
             commonWrites(w, in, rt, pc, data.depth, data.shadowMap)
                 .storageBuffer(pc.buffer(data.regions))
                 .storageBuffer(pc.buffer(data.regionList))
                 .storageImage(pc.view(data.out))
-                .push(cmd, glass_);
-            bindTextures(cmd, glass_, *in.scene);
-            glass_.pushConstants(cmd, push);
+                .push(cmd, pipeline);
+            bindTextures(cmd, pipeline, *in.scene);
+            pipeline.pushConstants(cmd, push);
             shader::dispatchCovering(cmd, dispatch, gpu::kRaytraceGroupSize);
         });
     return d.out;

@@ -49,7 +49,7 @@ public:
 
 private:
     const vk::Context& ctx_;
-    shader::Pipeline screen_, glass_;
+    shader::Pipeline screen_[2], glass_[2];  // [rt_coverage=raster]: its own pipelines (a specialization constant)
     // The graph keeps the TLAS storage's and the scratch's last access here from frame to frame.
     graph::ExternalBuffer tlasStorage_, scratch_;
 };

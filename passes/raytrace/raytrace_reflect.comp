@@ -8,6 +8,8 @@
 // the planar reference resolves) traces its mirror ray and writes what it sees with its kind
 // (raytrace_common.glsl); every other pixel gets "no reflection".
 layout(local_size_x = kRaytraceGroupSize, local_size_y = kRaytraceGroupSize) in;
+// --set rt_coverage=raster: a pipeline of its own, so that the exact one carries none of its code.
+layout(constant_id = 0) const bool kRasterCoverage = false;
 layout(set = 0, binding = 11) uniform sampler2D normalTex;
 layout(set = 0, binding = 12) uniform usampler2D reflectorTex;
 layout(set = 0, binding = 13, rgba16f) uniform writeonly image2D reflection;
@@ -50,7 +52,7 @@ void main() {
     vec2 path = vec2(0.0);  // reflected-path image (common/reflection.h): length, the hit's motion slot
     if (id != 0u && reflectorRay(pix, id, r, n, origin, dir)) {
         float eyeDistance = distance(frame.cameraPos.xyz, origin);
-        bool raster = (pc.flags & (kRaytraceRasterCoverage | kRaytraceNormalMapped)) == kRaytraceRasterCoverage;
+        bool raster = kRasterCoverage && (pc.flags & kRaytraceNormalMapped) == 0u;
         result = raster ? rasterCoverageReflection(r, pix, origin, dir, eyeDistance, pc.subpixelBits)
                         : traceReflection(r, n, pix, origin, dir, eyeDistance);
         if (traceHitT > 0.0) path = vec2(eyeDistance + traceHitT, pathTag(traceHitSlot, 0u));
