@@ -83,9 +83,9 @@ vec4 rasterCoverageReflection(ReflectorData r, ivec2 pix, vec3 origin, vec3 dir,
             sawSky = true;
             continue;
         }
-        bool known = false;
-        for (int i = 0; i < count; ++i) known = known || (candidates[i].draw == hit.draw && candidates[i].prim == hit.prim);
-        if (known) continue;
+        bool seen = false;
+        for (int i = 0; i < count; ++i) seen = seen || (candidates[i].draw == hit.draw && candidates[i].prim == hit.prim);
+        if (seen) continue;
         differ = true;
         if (count < kCoverageCandidates) candidates[count++] = hit;
     }

@@ -266,8 +266,9 @@ bool passesAlphaMask(uint draw, uint prim, vec2 bary) {
     return alpha >= m.alphaCutoff;
 }
 
-// The distance from `origin` to the last traceReflection()'s hit, 0 when it hit nothing (the sky), and
-// the hit draw's motion slot (0: still, or nothing hit).
+// The distance from `origin` to the last shaded reflection's hit (reflectionOf, which traceReflection and
+// rasterCoverageReflection end in), 0 when it hit nothing (the sky), and the hit draw's motion slot (0:
+// still, or nothing hit).
 float traceHitT = 0.0;
 uint traceHitSlot = 0u;
 

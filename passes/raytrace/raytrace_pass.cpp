@@ -6,6 +6,8 @@
 #include "raytrace_glass_comp.h"
 #include "raytrace_reflect_comp.h"
 
+#include <string>
+
 namespace ppr::passes {
 namespace {
 
@@ -38,9 +40,11 @@ RaytracePass::RaytracePass(const vk::Context& ctx, const gpu::GpuScene& scene) :
     layout.pushConstantBytes = sizeof(gpu::RaytracePush);
     layout.extraSets = {scene.textureSetLayout()};
     for (uint32_t raster = 0; raster < 2; ++raster) {
-        const uint32_t specialization[] = {raster};
-        screen_[raster] = shader::createComputePipeline(ctx, PPR_SPIRV(raytrace_reflect_comp), layout, "raytraced.reflect", specialization);
-        glass_[raster] = shader::createComputePipeline(ctx, PPR_SPIRV(raytrace_glass_comp), layout, "raytraced.glass", specialization);
+        const uint32_t specialization[] = {raster};  // kRasterCoverage
+        const std::string suffix = raster ? ".raster" : "";
+        screen_[raster] =
+            shader::createComputePipeline(ctx, PPR_SPIRV(raytrace_reflect_comp), layout, "raytraced.reflect" + suffix, specialization);
+        glass_[raster] = shader::createComputePipeline(ctx, PPR_SPIRV(raytrace_glass_comp), layout, "raytraced.glass" + suffix, specialization);
     }
 }
 

@@ -21,7 +21,7 @@ struct RaytraceInputs {
     VkBuffer reflectors = VK_NULL_HANDLE;  // this frame slot's ReflectorData[]
     VkAccelerationStructureKHR tlas = VK_NULL_HANDLE;
     std::optional<graph::BufferHandle> tlasBuilt;  // the TLAS's storage as this frame's rebuild left it (animated scenes)
-    bool rasterCoverage = false;  // screen pass, flat mirrors: silhouettes as the rasterizer snaps them (raster_coverage.glsl)
+    bool rasterCoverage = false;  // rt_coverage=raster: flat mirrors and the glass atlas decide silhouettes as the rasterizer does (raster_coverage.glsl)
 };
 
 // This frame's glass atlas layout (glass_reflect/glass_regions.hpp).
