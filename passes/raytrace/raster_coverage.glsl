@@ -16,9 +16,9 @@
 // with 8 sub-pixel bits, so a ray of some ring crosses any edge that may cover the centre (a sliver
 // thinner than a ring's spacing is met by a smaller ring).
 const int kCoverageRings = 3, kCoveragePerRing = 8, kCoverageCandidates = 8;
-vec2 coverageOffset(int k) {
-    int ring = k / kCoveragePerRing;
-    float angle = (float(k % kCoveragePerRing) + 0.5 * float(ring)) * (2.0 * 3.14159265 / float(kCoveragePerRing));
+// The i-th ray of ring `ring` (0: the innermost), pixels from the centre; rings are turned half a step apart.
+vec2 coverageOffset(int ring, int i) {
+    float angle = (float(i) + 0.5 * float(ring)) * (2.0 * 3.14159265 / float(kCoveragePerRing));
     return exp2(-9.0 + float(ring)) * vec2(cos(angle), sin(angle));
 }
 
@@ -30,7 +30,7 @@ bool snappedPosition(ReflectorData r, vec3 p, ivec2 pix, float unit, out ivec2 q
     vec4 clip = frame.viewProj * vec4(mirroredPoint(r, p), 1.0);
     q = ivec2(0);
     if (clip.w <= 0.0) return false;
-    vec2 f = ((clip.xy / clip.w * 0.5 + 0.5) * frame.screenSize - (vec2(pix) + 0.5)) * unit;
+    vec2 f = (pixelFromClip(clip) - (vec2(pix) + 0.5)) * unit;
     if (any(greaterThan(abs(f), vec2(1e9)))) return false;  // rasterCoversCentre: within 2^30
     q = ivec2(roundEven(f));
     return true;
@@ -71,23 +71,25 @@ vec4 rasterCoverageReflection(ReflectorData r, ivec2 pix, vec3 origin, vec3 dir,
     int count = 0;
     if (centreFound) candidates[count++] = centre;
     bool sawSky = !centreFound, differ = false;
-    // The outer ring first: where none of its rays leaves the centre's triangle, the inner rings are not traced.
-    for (int j = 0; j < kCoverageRings * kCoveragePerRing; ++j) {
-        if (j == kCoveragePerRing && !differ) break;
-        int k = (kCoverageRings * kCoveragePerRing - kCoveragePerRing + j) % (kCoverageRings * kCoveragePerRing);
-        vec3 d = eyeRayDir(vec2(pix) + 0.5 + coverageOffset(k)), o;
-        if (!onPlane(r, d, o)) continue;
-        RayHit hit;
-        if (!traceNearest(r, o, reflect(d, r.normal), hit)) {
-            differ = differ || centreFound;
-            sawSky = true;
-            continue;
+    // The outer ring first, then the inner ones from the innermost out, only where the outer ring left
+    // the centre's triangle.
+    for (int pass = 0; pass < kCoverageRings && (pass == 0 || differ); ++pass) {
+        int ring = (pass + kCoverageRings - 1) % kCoverageRings;
+        for (int k = 0; k < kCoveragePerRing; ++k) {
+            vec3 d = eyeRayDir(vec2(pix) + 0.5 + coverageOffset(ring, k)), o;
+            if (!onPlane(r, d, o)) continue;
+            RayHit hit;
+            if (!traceNearest(r, o, reflect(d, r.normal), hit)) {
+                differ = differ || centreFound;
+                sawSky = true;
+                continue;
+            }
+            bool seen = false;
+            for (int i = 0; i < count; ++i) seen = seen || (candidates[i].draw == hit.draw && candidates[i].prim == hit.prim);
+            if (seen) continue;
+            differ = true;
+            if (count < kCoverageCandidates) candidates[count++] = hit;
         }
-        bool seen = false;
-        for (int i = 0; i < count; ++i) seen = seen || (candidates[i].draw == hit.draw && candidates[i].prim == hit.prim);
-        if (seen) continue;
-        differ = true;
-        if (count < kCoverageCandidates) candidates[count++] = hit;
     }
     if (!differ) return reflectionOf(centreFound, centre, r, r.normal, pix, origin, dir, eyeDistance);
 
