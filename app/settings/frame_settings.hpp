@@ -8,6 +8,9 @@ namespace ppr::app {
 
 enum class PprFallback : uint32_t { Ssr, None, SsrHoles };
 enum class NormalMap : uint32_t { Off, Approx, Raymarch };
+// normalmap=raymarch's search for where the mapped ray meets what it reflects: none (the slides' taps),
+// tangent planes (then the taps), or the walk and bisection from the taken tap.
+enum class NormalRefine : uint32_t { Off, Planes, Walk };
 enum class EnvSource : uint32_t { Sky, Probe };
 // PPR hole filling: none, the depth-aware rule (passes/ppr_common/ppr_resolve.glsl), or the slides' rule.
 enum class HoleRule : uint32_t { Off, Enclosed, Slides };
@@ -38,7 +41,7 @@ struct PprSettings {         // owner: ppr
     uint32_t reachThreads;   // the reach pass's invocations per tile (passes/ppr_reach/reach_threads.hpp); 0: auto
     PprFallback fallback;
     NormalMap normalMap;     // the bonus slides' normal-map approximation in the reflection pass
-    bool normalRefine;       // raymarch: find where the ray crosses the depth buffer
+    NormalRefine normalRefine;  // raymarch: find where the ray meets what it reflects
     bool contact;            // holes=1: march toward the reflected point for what the main view hides
 };
 struct SsrSettings {         // owner: ssr (the four ssr-* techniques and PPR's fallback)

@@ -168,12 +168,16 @@ const std::vector<SettingDecl>& settingDecls() {
                           "normal-mapped reflectors: off (flat mirrors); PPR: approx (reflect about the mapped normal at the flat "
                           "reflection distance), raymarch (4 depth-tested taps along that ray, else flat); SSR and raytraced "
                           "reflect about the mapped normal unless off"),
-        toggle("normal_refine", "ppr", [](FrameSettings& s) -> bool& { return s.ppr.normalRefine; }, true,
-               "normalmap=raymarch: find where the ray crosses the depth buffer (bisect after a hidden tap, walk on past "
-               "an approximated point that is not hidden; 0: the slides' 4 taps alone)"),
+        choice<NormalRefine>("normal_refine", "ppr", [](FrameSettings& s) -> NormalRefine& { return s.ppr.normalRefine; }, {"0", "1", "walk"}, "1",
+                             "normalmap=raymarch: find where the ray meets what it reflects. 1: where it crosses the tangent plane of "
+                             "the surface the flat reflection sees (then of the one seen there), if the depth buffer shows that plane "
+                             "there, else the taps; walk: walk on past an approximated point that is not hidden and bisect after a "
+                             "hidden tap (the search before 1, slower); 0: the slides' 4 taps alone"),
         toggle("contact", "ppr", [](FrameSettings& s) -> bool& { return s.ppr.contact; }, true,
                "holes=1: 4 depth-tested taps (2, 4, 8, 16 px) from each reflector pixel toward the point it reflects find "
-               "what the main view hides in between, such as the underside of an object standing on the reflector (0: off)"),
+               "what the main view hides in between, such as the underside of an object standing on the reflector; not on "
+               "normal-mapped pixels with normalmap=raymarch (but normal_refine=walk), whose search follows the mapped ray "
+               "(0: off)"),
         choice<RtCoverage>("rt_coverage", "raytraced", [](FrameSettings& s) -> RtCoverage& { return s.raytrace.coverage; }, {"exact", "raster"},
                            "exact",
                            "ray-traced reference with normalmap=off, and its glass atlas: at silhouettes the triangle the ray meets "

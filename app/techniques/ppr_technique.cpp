@@ -25,7 +25,8 @@ uint32_t reflectFlags(const FrameSettings& s) {  // the screen's reflection pass
     uint32_t flags = resolveFlags(s.ppr);
     if (s.ppr.normalMap == NormalMap::Approx) flags |= gpu::kPprNormalApprox;
     if (s.ppr.normalMap == NormalMap::Raymarch) flags |= gpu::kPprNormalRaymarch;
-    if (s.ppr.normalMap == NormalMap::Raymarch && s.ppr.normalRefine) flags |= gpu::kPprNormalRefine;
+    if (s.ppr.normalMap == NormalMap::Raymarch && s.ppr.normalRefine != NormalRefine::Off) flags |= gpu::kPprNormalRefine;
+    if (s.ppr.normalMap == NormalMap::Raymarch && s.ppr.normalRefine == NormalRefine::Walk) flags |= gpu::kPprNormalWalk;
     if (s.ppr.contact && s.ppr.holes == HoleRule::Enclosed) flags |= gpu::kPprContactMarch;
     if (s.env.fallback) flags |= gpu::kPprEnvironment;
     if (s.tiles.indirect) flags |= gpu::kPprIndirect;

@@ -203,18 +203,24 @@ bool pprFootprint(PprDecoded own, uvec4 around, vec2 screenCentre, out PprFootpr
 
 struct PprResolved {
     bool valid;
-    vec3 color;
-    ivec2 readTexel;  // the texel whose data was used (hole filling may pick a neighbour)
-    vec2 source;      // screen position (pixels) of the point sample: where the reflected point is seen
-    vec2 halfStep;    // minified: the filtered sample's two taps lie ± this apart (0: one tap)
+    vec3 color;           // pprResolve: the resolved colour (black where not valid); pprLocate: black
+    ivec2 readTexel;      // the texel whose data was used (hole filling may pick a neighbour)
+    vec2 source;          // screen position (pixels) of the point sample: where the reflected point is seen
+    vec2 filtered;        // screen position of the filtered sample (minified: the centre of its two taps)
+    vec2 halfStep;        // minified: the filtered sample's two taps lie ± this apart (0: one tap)
+    float bleedStrength;  // how strongly anti-bleeding pulls toward the point sample
 };
 
-PprResolved pprResolve(ivec2 texel, vec2 screenCentre, float pixelsPerTexel, uint flags) {
+// Where a texel's reflection is sampled, without sampling it: the reflection pass replaces the colour
+// of a normal-mapped pixel, and fetches the flat one only where it keeps it (pprColor).
+PprResolved pprLocate(ivec2 texel, vec2 screenCentre, float pixelsPerTexel, uint flags) {
     PprResolved r;
     r.readTexel = texel;
     r.color = vec3(0.0);
     r.source = screenCentre;
+    r.filtered = screenCentre;
     r.halfStep = vec2(0.0);
+    r.bleedStrength = 1.0;
     uint v0 = fetchValue(texel);
     bool between = false;  // holes=1 inside a magnified layer: sample between two of its samples
     vec2 betweenSource = screenCentre;
@@ -261,9 +267,8 @@ PprResolved pprResolve(ivec2 texel, vec2 screenCentre, float pixelsPerTexel, uin
         filteredAt = screenCentre - offsetFiltered;
         pointAt = screenCentre - offsetPoint;
     }
-    vec3 unfiltered = textureLod(scenePoint, pointAt * frame.invScreenSize, 0.0).rgb;
-    r.color = unfiltered;
     r.source = pointAt;
+    r.filtered = filteredAt;
     if ((flags & kPprFiltering) == 0u) return r;
     // holes=1, where the reflection is minified (more than kPprFootprintMinStep source pixels per
     // target pixel): the filtered sample where the local map puts it, averaged over the target pixel's
@@ -272,8 +277,6 @@ PprResolved pprResolve(ivec2 texel, vec2 screenCentre, float pixelsPerTexel, uin
     // point sample, which stands for a smaller share of the footprint. Adjacent offsets within 2 px of
     // this one (closeOffsets) mean a map near 1:1 (a unit mirror changes the offset by 2 per pixel):
     // nothing minified, and the footprint's decoding is skipped.
-    float bleedStrength = 1.0;
-    vec3 filtered;
     bool unitMap = (closeOffsets(around.x, v0) || around.x == kPprClearValue) && (closeOffsets(around.y, v0) || around.y == kPprClearValue) &&
                    (closeOffsets(around.z, v0) || around.z == kPprClearValue) && (closeOffsets(around.w, v0) || around.w == kPprClearValue);
     bool screenGrid = all(equal(screenCentre, vec2(texel) + 0.5));  // texels are screen pixels, not a scaled atlas region
@@ -285,12 +288,25 @@ PprResolved pprResolve(ivec2 texel, vec2 screenCentre, float pixelsPerTexel, uin
     if (reach > kPprFootprintMinStep && reach < kPprFootprintMaxStep) {
         mat2 m = footprint.sourcePerTarget;
         r.halfStep = 0.25 * (length(m[0]) > length(m[1]) ? m[0] : m[1]);
-        filtered = 0.5 * (textureLod(sceneLinear, (footprint.position + r.halfStep) * frame.invScreenSize, 0.0).rgb +
-                          textureLod(sceneLinear, (footprint.position - r.halfStep) * frame.invScreenSize, 0.0).rgb);
-        bleedStrength = inversesqrt(reach);
-    } else {
-        filtered = textureLod(sceneLinear, filteredAt * frame.invScreenSize, 0.0).rgb;
+        r.filtered = footprint.position;
+        r.bleedStrength = inversesqrt(reach);
     }
-    r.color = (flags & kPprAntiBleeding) != 0u ? reduceColorBleeding(filtered, unfiltered, bleedStrength) : filtered;
+    return r;
+}
+
+// The colour at a located texel (valid): the point sample, or the filtered one (two taps where
+// minified) with anti-bleeding.
+vec3 pprColor(PprResolved r, uint flags) {
+    vec3 unfiltered = textureLod(scenePoint, r.source * frame.invScreenSize, 0.0).rgb;
+    if ((flags & kPprFiltering) == 0u) return unfiltered;
+    vec3 filtered = r.halfStep == vec2(0.0) ? textureLod(sceneLinear, r.filtered * frame.invScreenSize, 0.0).rgb
+                                            : 0.5 * (textureLod(sceneLinear, (r.filtered + r.halfStep) * frame.invScreenSize, 0.0).rgb +
+                                                     textureLod(sceneLinear, (r.filtered - r.halfStep) * frame.invScreenSize, 0.0).rgb);
+    return (flags & kPprAntiBleeding) != 0u ? reduceColorBleeding(filtered, unfiltered, r.bleedStrength) : filtered;
+}
+
+PprResolved pprResolve(ivec2 texel, vec2 screenCentre, float pixelsPerTexel, uint flags) {
+    PprResolved r = pprLocate(texel, screenCentre, pixelsPerTexel, flags);
+    if (r.valid) r.color = pprColor(r, flags);
     return r;
 }

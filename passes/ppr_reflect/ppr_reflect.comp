@@ -59,6 +59,10 @@ uint fetchValue(ivec2 p) {
 #include "common/environment.glsl"
 #include "ppr_common/ppr_resolve.glsl"
 
+// The flat reflection's colour at a located pixel: the rim's or the contact march's point sample, or
+// the resolved one.
+vec3 flatColor(PprResolved r, bool colorKnown) { return colorKnown ? r.color : pprColor(r, pc.flags); }
+
 bool environmentUsesProbe() { return (pc.flags & kPprEnvironmentProbe) != 0u; }
 
 // Clip coordinates to pixel coordinates; false behind the near plane or off screen.
@@ -83,24 +87,94 @@ bool visibleAlongRay(vec3 surface, vec3 dir, float t, out vec2 pixel, out bool o
     return w <= (d > 0.0 ? frame.cameraPos.w / d : 1e30) * 1.001;  // in front of (or on) what the camera sees
 }
 
+// normal_refine=1: the mapped ray meets the surface its flat reflection sees (`seenPoint`, at pixel
+// `seenPix`) where it crosses that surface's tangent plane (the G-buffer normal there). The crossing
+// is taken when the depth buffer shows that plane at its pixel (within kPprNormalPlaneTolerance of the
+// view distance): the ray ends on that surface. Otherwise the plane of the surface shown there is
+// tried, kPprNormalPlaneGuesses planes in all. One normal and one depth read a plane, where a march
+// toward the crossing reads a depth a step: on the flat faces that most reflected points lie on it is
+// exact, not within a step.
+bool tangentPlaneHit(vec3 surface, vec3 dir, float reach, ivec2 seenPix, vec3 seenPoint, out vec2 hitPixel) {
+    for (uint k = 0u; k < kPprNormalPlaneGuesses; ++k) {
+        vec3 planeNormal = normalize(texelFetch(normalTex, seenPix, 0).xyz);
+        float facing = dot(dir, planeNormal);
+        if (facing >= -kPprNormalPlaneMinFacing) return false;  // along the plane, or meeting its back
+        float t = dot(seenPoint - surface, planeNormal) / facing;
+        float w;
+        if (t <= 0.0 || t >= reach || !projectToScreen(surface + dir * t, hitPixel, w)) return false;
+        ivec2 shownPix = ivec2(hitPixel);
+        float depth = texelFetch(depthTex, shownPix, 0).r;
+        if (depth <= 0.0) return false;
+        vec3 shown = worldFromDepth((vec2(shownPix) + 0.5) * frame.invScreenSize, depth);
+        if (abs(dot(shown - seenPoint, planeNormal)) < kPprNormalPlaneTolerance * frame.cameraPos.w / depth) return true;
+        seenPix = shownPix;
+        seenPoint = shown;
+    }
+    return false;
+}
+
+// normal_refine=walk (the default until 2026-12-06): from the taken tap at `t`, the search for where
+// the ray crosses the depth buffer. A tap that follows a hidden one moves by bisection to the
+// crossing; an approximated point (tap 0) that is not hidden first walks on along the ray to find it.
+void walkToCrossing(vec3 surface, vec3 dir, float dist, float step, float t, bool approximated, bool previousHidden, inout vec2 hitPixel) {
+    float visible = t, hidden = t + step;
+    bool onScreen;
+    if (approximated) {
+        // Along the mapped ray, what it reflects lies farther than the flat distance. Walk on in
+        // short steps; the last point still in front is the nearest known to the hit, crossing found
+        // or not.
+        float ahead = step * kPprNormalAheadStep;
+        for (uint j = 1u; j <= kPprNormalAheadSteps; ++j) {
+            vec2 p;
+            float next = dist + ahead * float(j);
+            if (visibleAlongRay(surface, dir, next, p, onScreen)) {
+                visible = next;
+                hitPixel = p;
+                continue;
+            }
+            if (onScreen) {
+                previousHidden = true;
+                hidden = next;
+            }
+            break;
+        }
+    }
+    // The ray passed behind the depth buffer between the last visible point and the hidden one after
+    // it: the taken point moves toward that crossing, where the ray meets what it reflects, not the
+    // free space before it.
+    if (!previousHidden) return;
+    for (uint i = 0u; i < kPprNormalRefineSteps; ++i) {
+        float mid = 0.5 * (visible + hidden);
+        vec2 p;
+        if (visibleAlongRay(surface, dir, mid, p, onScreen)) {
+            visible = mid;
+            hitPixel = p;
+        } else {
+            hidden = mid;
+        }
+    }
+}
+
 // The bonus slides' normal-map approximation. The flat reflection found the reflected point at
 // `flatSource` (pixels); its distance from the surface point stands for the distance along the ray
 // reflected about the normal-mapped normal. approx: the point that far along that ray, projected.
 // raymarch: kPprNormalTaps points from there back toward the reflecting pixel; the first one not
 // hidden behind the depth buffer is taken (an approximated point behind a nearer object would fetch
-// that object: the disocclusion the slides show). With normal_refine, a taken point that follows a
-// hidden one moves by bisection to where the ray crosses the depth buffer, and an approximated point
-// that is not hidden first walks on along the ray to find that crossing. False: keep the flat
-// reflection.
+// that object: the disocclusion the slides show). normal_refine=1 tries the tangent planes first
+// (tangentPlaneHit), the taps where none is shown there; normal_refine=walk searches from the
+// taken tap (walkToCrossing). False: keep the flat reflection.
 bool normalMappedHit(vec3 surface, vec3 dir, vec2 flatSource, out vec2 hitPixel) {
     ivec2 src = clamp(ivec2(flatSource), ivec2(0), ivec2(frame.screenSize) - 1);
     float srcDepth = texelFetch(depthTex, src, 0).r;
     if (srcDepth <= 0.0) return false;
-    float dist = distance(surface, worldFromDepth((vec2(src) + 0.5) * frame.invScreenSize, srcDepth));
+    vec3 flatPoint = worldFromDepth((vec2(src) + 0.5) * frame.invScreenSize, srcDepth);
+    float dist = distance(surface, flatPoint);
     float w;
     if ((pc.flags & kPprNormalRaymarch) == 0u) return projectToScreen(surface + dir * dist, hitPixel, w);
+    bool walk = (pc.flags & kPprNormalWalk) != 0u;
+    if (!walk && (pc.flags & kPprNormalRefine) != 0u && tangentPlaneHit(surface, dir, dist * kPprNormalPlaneReach, src, flatPoint, hitPixel))
+        return true;
     float step = dist / float(kPprNormalTaps);
-    bool refine = (pc.flags & kPprNormalRefine) != 0u;
     bool previousHidden = false;  // the point farther along the ray lies on screen behind the depth buffer
     for (uint k = 0u; k < kPprNormalTaps; ++k) {
         float t = dist - step * float(k);
@@ -109,42 +183,7 @@ bool normalMappedHit(vec3 surface, vec3 dir, vec2 flatSource, out vec2 hitPixel)
             previousHidden = onScreen;
             continue;
         }
-        float visible = t, hidden = t + step;
-        if (refine && k == 0u) {
-            // The approximated point itself is in front of the depth buffer: along the mapped ray,
-            // what it reflects lies farther than the flat distance. Walk on in short steps; the last
-            // point still in front is the nearest known to the hit, crossing found or not.
-            float ahead = step * kPprNormalAheadStep;
-            for (uint j = 1u; j <= kPprNormalAheadSteps; ++j) {
-                vec2 p;
-                float next = dist + ahead * float(j);
-                if (visibleAlongRay(surface, dir, next, p, onScreen)) {
-                    visible = next;
-                    hitPixel = p;
-                    continue;
-                }
-                if (onScreen) {
-                    previousHidden = true;
-                    hidden = next;
-                }
-                break;
-            }
-        }
-        // The ray passed behind the depth buffer between the last visible point and the hidden one
-        // after it: the taken point moves toward that crossing, where the ray meets what it reflects,
-        // not the free space before it.
-        if (previousHidden && refine) {
-            for (uint i = 0u; i < kPprNormalRefineSteps; ++i) {
-                float mid = 0.5 * (visible + hidden);
-                vec2 p;
-                if (visibleAlongRay(surface, dir, mid, p, onScreen)) {
-                    visible = mid;
-                    hitPixel = p;
-                } else {
-                    hidden = mid;
-                }
-            }
-        }
+        if (walk) walkToCrossing(surface, dir, dist, step, t, k == 0u, previousHidden, hitPixel);
         return true;
     }
     return false;
@@ -307,10 +346,14 @@ void main() {
         return;
     }
 
-    PprResolved r = pprResolve(pix, vec2(pix) + 0.5, 1.0, pc.flags);
+    // The flat reflection's colour is fetched only where it is kept (flatColor): a normal-mapped
+    // pixel's march usually replaces it.
+    PprResolved r = pprLocate(pix, vec2(pix) + 0.5, 1.0, pc.flags);
+    bool colorKnown = false;  // r.color holds the rim's or the contact march's point sample
     vec2 rim;
     if (!r.valid && (pc.flags & kPprHoleEnclosed) != 0u && rimContinuation(pix, id, rim)) {
         r.valid = true;
+        colorKnown = true;
         r.color = textureLod(scenePoint, rim * frame.invScreenSize, 0.0).rgb;
         r.source = rim;
         r.readTexel = ivec2(rim);  // not this pixel's data: marked hole-filled
@@ -321,9 +364,20 @@ void main() {
                        : vec3(0.0);
     vec3 flatNormal = reflectors[id - 1u].normal;
     vec2 contact;
-    bool contacted = r.valid && (pc.flags & kPprContactMarch) != 0u &&
+    vec3 n = flatNormal;
+    float mappedCos = 1.0;
+    if ((pc.flags & normalModes) != 0u) {
+        vec3 mapped = normalize(texelFetch(normalTex, pix, 0).xyz);
+        mappedCos = dot(mapped, flatNormal);
+        if (mappedCos < kFlatNormalCos) n = mapped;
+    }
+    // raymarch (but normal_refine=walk, as before) searches the mapped ray itself on a normal-mapped
+    // pixel: no contact march along the flat one.
+    bool mappedRaymarch = n != flatNormal && (pc.flags & kPprNormalRaymarch) != 0u && (pc.flags & kPprNormalWalk) == 0u;
+    bool contacted = r.valid && !mappedRaymarch && (pc.flags & kPprContactMarch) != 0u &&
                      contactHit(pix, surface, reflect(normalize(surface - frame.cameraPos.xyz), flatNormal), r.source, contact);
     if (contacted) {
+        colorKnown = true;
         r.color = textureLod(scenePoint, contact * frame.invScreenSize, 0.0).rgb;
         r.source = contact;
     }
@@ -334,16 +388,9 @@ void main() {
         return;
     }
     if ((pc.flags & (normalModes | kPprEnvironment)) == 0u) {  // the slides' flat mirror, as it always was
-        imageStore(outReflection, pix, r.valid ? vec4(r.color, r.readTexel == pix ? kReflectionHit : kReflectionFilled)
+        imageStore(outReflection, pix, r.valid ? vec4(flatColor(r, colorKnown), r.readTexel == pix ? kReflectionHit : kReflectionFilled)
                                                : vec4(0.0, 0.0, 0.0, kReflectionNone));
         return;
-    }
-    vec3 n = flatNormal;
-    float mappedCos = 1.0;
-    if ((pc.flags & normalModes) != 0u) {
-        vec3 mapped = normalize(texelFetch(normalTex, pix, 0).xyz);
-        mappedCos = dot(mapped, flatNormal);
-        if (mappedCos < kFlatNormalCos) n = mapped;
     }
     vec3 dir = reflect(normalize(surface - frame.cameraPos.xyz), n);
     if (!r.valid) {  // nothing projected here: the environment, or no reflection
@@ -352,15 +399,18 @@ void main() {
         imageStore(outReflection, pix, env ? vec4(environmentRadiance(surface, dir), kReflectionEnvironment) : vec4(0.0, 0.0, 0.0, kReflectionNone));
         return;
     }
-    vec3 color = r.color;
+    vec3 color;
     vec2 seen = r.source;
     vec2 hit;
     if (n != flatNormal && dot(dir, flatNormal) > 0.0 && normalMappedHit(surface, dir, r.source, hit)) {
         // Averaged over the flat sample's footprint where that is minified (the normal map moves the
         // reflected point, not how much of the source one pixel covers).
-        color = 0.5 * (textureLod(sceneLinear, (hit + r.halfStep) * frame.invScreenSize, 0.0).rgb +
-                       textureLod(sceneLinear, (hit - r.halfStep) * frame.invScreenSize, 0.0).rgb);
+        color = r.halfStep == vec2(0.0) ? textureLod(sceneLinear, hit * frame.invScreenSize, 0.0).rgb
+                                        : 0.5 * (textureLod(sceneLinear, (hit + r.halfStep) * frame.invScreenSize, 0.0).rgb +
+                                                 textureLod(sceneLinear, (hit - r.halfStep) * frame.invScreenSize, 0.0).rgb);
         seen = hit;
+    } else {
+        color = flatColor(r, colorKnown);
     }
     if ((pc.flags & kPprEnvironment) != 0u) color = environmentBlend(color, seen, surface, dir);
     // The normal-mapped hit moved the reflected point: its path replaces the flat one stored above.

@@ -20,8 +20,11 @@ PPR_CONST(uint, kPprEnvironmentProbe, 128u)
 PPR_CONST(uint, kPprHoleEnclosed, 256u)
 // TAA's reflection history: also write the reflected path length per pixel (outDistance).
 PPR_CONST(uint, kPprWriteDistance, 512u)
-// --set normal_refine=1: raymarch looks for where the ray crosses the depth buffer (ppr_reflect.comp).
+// --set normal_refine=1: raymarch first tries where the ray crosses the tangent plane of the surface
+// the flat reflection sees (ppr_reflect.comp tangentPlaneHit). With kPprNormalWalk (normal_refine=walk,
+// the search before it) it walks and bisects from the taken tap instead (walkToCrossing).
 PPR_CONST(uint, kPprNormalRefine, 1024u)
+PPR_CONST(uint, kPprNormalWalk, 8192u)
 // --set contact=1 (with holes=1): a short march from each reflector pixel toward the point its data
 // reflects finds what the main view hides between them (an object's underside where it stands on the
 // reflector): kPprContactTaps taps, kPprContactFirstTap screen pixels from the pixel and doubling.
@@ -49,10 +52,18 @@ PPR_CONST(float, kPprFootprintMaxStep, 24.0f)
 PPR_CONST(float, kPprFootprintMinStep, 1.5f)
 // Taps of the normalmap=raymarch march between the pixel and the approximated reflection.
 PPR_CONST(uint, kPprNormalTaps, 4u)
-// normal_refine=1: bisection steps between a visible point of the ray and the hidden one after it,
+// normal_refine=1: how many tangent planes are tried (the one the flat reflection sees, then the
+// one shown where the ray crossed it); a crossing is taken where the depth buffer lies within this
+// fraction of the view distance of its plane; a plane crossed farther along the ray than this many
+// times the flat reflection distance, or met this nearly edge-on (cosine), is not tried.
+PPR_CONST(uint, kPprNormalPlaneGuesses, 2u)
+PPR_CONST(float, kPprNormalPlaneTolerance, 0.01f)
+PPR_CONST(float, kPprNormalPlaneReach, 4.0f)
+PPR_CONST(float, kPprNormalPlaneMinFacing, 0.001f)
+// normal_refine=walk: bisection steps between a visible point of the ray and the hidden one after it,
 // toward where the ray crosses the depth buffer.
 PPR_CONST(uint, kPprNormalRefineSteps, 5u)
-// normal_refine=1, where the approximated point is not hidden: up to this many steps on along the
+// normal_refine=walk, where the approximated point is not hidden: up to this many steps on along the
 // ray, each this fraction of the taps' spacing, looking for where it falls behind the depth buffer.
 PPR_CONST(uint, kPprNormalAheadSteps, 8u)
 PPR_CONST(float, kPprNormalAheadStep, 0.25f)

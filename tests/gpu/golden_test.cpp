@@ -13,7 +13,8 @@
 // `current` holds the settings the current build adds to keep the old behaviour (options the
 // recording build did not have; taa=0, the default, is spelled out: it must render today's images;
 // fallback=ssr: PPR's holes unmarched, as before fallback=ssr_holes became the default;
-// normal_refine=0: the slides' raymarch taps without the search for the crossing).
+// normal_refine=0: the slides' raymarch taps without the search for the crossing; normal_refine=walk:
+// the search for it before the tangent planes, with the contact march on normal-mapped pixels).
 // On another device (another driver rasterizes and rounds differently) the test is skipped with a
 // message: goldens are per device. One device name can still round differently from host to host
 // (llvmpipe compiles shaders for the CPU it runs on), so a file holds one or more recordings, each
@@ -41,7 +42,7 @@ struct Golden {
 const Golden kGoldens[] = {
     {"ppr_before_normalmaps.json", "--set normalmap=off --set fallback_env=0", "--set holes=slides --set facing=0 --set splat=0 --set taa=0 --set fallback=ssr --set normal_refine=0"},
     {"ppr_before_hole_rule.json", "", "--set holes=slides --set facing=0 --set splat=0 --set taa=0 --set fallback=ssr --set normal_refine=0"},
-    {"taa_before_average.json", "--set taa=1 --frames 8", "--set taa_average=0"},
+    {"taa_before_average.json", "--set taa=1 --frames 8", "--set taa_average=0 --set normal_refine=walk"},
 };
 constexpr const char* kSize = "320x180";
 
