@@ -87,21 +87,36 @@ bool visibleAlongRay(vec3 surface, vec3 dir, float t, out vec2 pixel, out bool o
     return w <= (d > 0.0 ? frame.cameraPos.w / d : 1e30) * 1.001;  // in front of (or on) what the camera sees
 }
 
+// The world position the depth buffer shows at pixel `p`.
+vec3 shownPoint(ivec2 p) { return worldFromDepth((vec2(p) + 0.5) * frame.invScreenSize, texelFetch(depthTex, p, 0).r); }
+
+// The plane of the surface shown at pixel `p` (world position `shown`): its normal from the positions
+// shown there and at the next pixel across and down (the previous one on the screen's last column or
+// row), turned toward the camera. Not the G-buffer normal: a normal map (the tiles' bevels) tilts that
+// away from the surface's plane, and the crossing with a tilted plane lands beside the true one.
+vec3 depthPlaneNormal(ivec2 p, vec3 shown) {
+    ivec2 last = ivec2(frame.screenSize) - 1;
+    vec3 across = p.x < last.x ? shownPoint(p + ivec2(1, 0)) - shown : shown - shownPoint(p - ivec2(1, 0));
+    vec3 down = p.y < last.y ? shownPoint(p + ivec2(0, 1)) - shown : shown - shownPoint(p - ivec2(0, 1));
+    vec3 n = normalize(cross(across, down));
+    return dot(n, frame.cameraPos.xyz - shown) < 0.0 ? -n : n;
+}
+
 // normal_refine=1: the mapped ray meets the surface its flat reflection sees (`seenPoint`, at pixel
-// `seenPix`) where it crosses that surface's tangent plane (the G-buffer normal there). The crossing
-// is taken when the depth buffer shows that plane at its pixel (within kPprNormalPlaneTolerance of the
-// view distance): the ray ends on that surface. Otherwise the plane of the surface shown there is
-// tried, kPprNormalPlaneGuesses planes in all. One normal and one depth read a plane, where a march
-// toward the crossing reads a depth a step: on the flat faces that most reflected points lie on it is
-// exact, not within a step.
+// `seenPix`) where it crosses that surface's plane (depthPlaneNormal). The crossing is taken when the
+// depth buffer shows that plane at its pixel (within kPprNormalPlaneTolerance of the view distance):
+// the ray ends on that surface. Otherwise the plane of the surface shown there is tried,
+// kPprNormalPlaneGuesses planes in all. Three depth reads a plane, where a march toward the crossing
+// reads one a step and ends within a step of it: on the flat faces most reflected points lie on, the
+// plane's crossing is the hit. The tests are written to fail on NaN (a plane read off the sky).
 bool tangentPlaneHit(vec3 surface, vec3 dir, float reach, ivec2 seenPix, vec3 seenPoint, out vec2 hitPixel) {
     for (uint k = 0u; k < kPprNormalPlaneGuesses; ++k) {
-        vec3 planeNormal = normalize(texelFetch(normalTex, seenPix, 0).xyz);
+        vec3 planeNormal = depthPlaneNormal(seenPix, seenPoint);
         float facing = dot(dir, planeNormal);
-        if (facing >= -kPprNormalPlaneMinFacing) return false;  // along the plane, or meeting its back
+        if (!(facing < -kPprNormalPlaneMinFacing)) return false;  // along the plane, or meeting its back
         float t = dot(seenPoint - surface, planeNormal) / facing;
         float w;
-        if (t <= 0.0 || t >= reach || !projectToScreen(surface + dir * t, hitPixel, w)) return false;
+        if (!(t > 0.0 && t < reach) || !projectToScreen(surface + dir * t, hitPixel, w)) return false;
         ivec2 shownPix = ivec2(hitPixel);
         float depth = texelFetch(depthTex, shownPix, 0).r;
         if (depth <= 0.0) return false;

@@ -20,8 +20,8 @@ PPR_CONST(uint, kPprEnvironmentProbe, 128u)
 PPR_CONST(uint, kPprHoleEnclosed, 256u)
 // TAA's reflection history: also write the reflected path length per pixel (outDistance).
 PPR_CONST(uint, kPprWriteDistance, 512u)
-// --set normal_refine=1: raymarch first tries where the ray crosses the tangent plane of the surface
-// the flat reflection sees (ppr_reflect.comp tangentPlaneHit). With kPprNormalWalk (normal_refine=walk,
+// --set normal_refine=1: raymarch first tries where the ray crosses the plane (from the depth buffer)
+// of the surface the flat reflection sees (ppr_reflect.comp tangentPlaneHit). With kPprNormalWalk (normal_refine=walk,
 // the search before it) it walks and bisects from the taken tap instead (walkToCrossing).
 PPR_CONST(uint, kPprNormalRefine, 1024u)
 PPR_CONST(uint, kPprNormalWalk, 8192u)
@@ -52,7 +52,7 @@ PPR_CONST(float, kPprFootprintMaxStep, 24.0f)
 PPR_CONST(float, kPprFootprintMinStep, 1.5f)
 // Taps of the normalmap=raymarch march between the pixel and the approximated reflection.
 PPR_CONST(uint, kPprNormalTaps, 4u)
-// normal_refine=1: how many tangent planes are tried (the one the flat reflection sees, then the
+// normal_refine=1: how many planes are tried (the one the flat reflection sees, then the
 // one shown where the ray crossed it); a crossing is taken where the depth buffer lies within this
 // fraction of the view distance of its plane; a plane crossed farther along the ray than this many
 // times the flat reflection distance, or met this nearly edge-on (cosine), is not tried.

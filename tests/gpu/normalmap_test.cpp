@@ -105,7 +105,7 @@ TEST(NormalMaps, ApproximationAgainstTheRayTracedReference) {
     for (const char* mode : {"off", "approx", "raymarch"}) modes[mode] = reflection(f, "ppr", "normalmap", mode, false);
     f.headless->settings().set("normal_refine", "0");  // the slides' four taps, no search
     modes["taps"] = reflection(f, "ppr", "normalmap", "raymarch", false);
-    f.headless->settings().set("normal_refine", "walk");  // the search before the tangent planes
+    f.headless->settings().set("normal_refine", "walk");  // the search before the surfaces' planes
     modes["walk"] = reflection(f, "ppr", "normalmap", "raymarch", false);
     f.headless->settings().set("normal_refine", "1");
     app::FloatImage mask = truth;
@@ -122,14 +122,14 @@ TEST(NormalMaps, ApproximationAgainstTheRayTracedReference) {
     const app::ReflectionScore brute = app::scoreReflection(reflection(f, "ssr-brute", "normalmap", "raymarch", false), mask, exposure);
     std::printf("ssr-brute          %6.2f dB over the same pixels\n", brute.psnrDb);
     // Measured at 320x180 (2026-12-06): off 24.27, approx 24.45, the slides' taps 24.61, raymarch with
-    // the tangent planes (normal_refine=1) 28.08, with the walk and bisection 25.79 (2026-11-27; its
+    // the surfaces' planes (normal_refine=1) 26.77, with the walk and bisection 25.79 (2026-11-27; its
     // bisection alone, before the walk past the approximated point: 26.03), ssr-brute 24.16 dB
     // (before the minified footprint of 2026-11-26, on the same host: 24.14, 24.21, 24.47 for the
     // taps, 24.16).
     EXPECT_GT(db["approx"], db["off"]) << "reflecting about the mapped normal beats the flat mirror";
     EXPECT_GT(db["taps"], db["approx"]) << "the taps fix the approximation's disocclusions";
     EXPECT_GT(db["walk"], db["taps"] + 0.5) << "the walk and bisection find where the ray meets the depth buffer";
-    EXPECT_GT(db["raymarch"], db["walk"]) << "the tangent planes find it exactly on flat faces, not within a step";
+    EXPECT_GT(db["raymarch"], db["walk"]) << "the surfaces' planes find it exactly on flat faces, not within a step";
     EXPECT_GT(db["raymarch"], brute.psnrDb - 1.0) << "within 1 dB of brute force where PPR has a reflection";
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
@@ -155,11 +155,11 @@ TEST(NormalMaps, RefinedRaymarchMatchesBruteForceAsComposited) {
     f.headless->settings().set("normal_refine", "1");
     std::printf("composited against raytraced: ppr %.2f dB, normal_refine=walk %.2f dB, normal_refine=0 %.2f dB, ssr-brute %.2f dB\n",
                 refined, walk, taps, brute);
-    // Measured at 320x180 (2026-12-06): ppr 38.70, normal_refine=walk 39.62, normal_refine=0 29.48,
+    // Measured at 320x180 (2026-12-06): ppr 41.35, normal_refine=walk 39.62, normal_refine=0 29.48,
     // ssr-brute 35.37 dB.
     EXPECT_GT(refined, brute - 1.0) << "within 1 dB of brute force";
     EXPECT_GT(walk, brute - 1.0) << "within 1 dB of brute force";
-    EXPECT_GT(refined, taps + 1.0) << "the tangent planes find the crossing";
+    EXPECT_GT(refined, taps + 1.0) << "the surfaces' planes find the crossing";
     EXPECT_GT(walk, taps + 1.0) << "the bisection and the walk past the approximated point find the crossing";
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
@@ -196,7 +196,7 @@ TEST(NormalMaps, HoleFallbackMarchesOnlyPprsHoles) {
     std::printf("holes whose reflected point is on screen %zu, marched %zu; %.2f -> %.2f dB, coverage %.4f -> %.4f\n", holes, filled,
                 before.psnrDb, after.psnrDb, before.coverage, after.coverage);
     // Measured at 320x180 (2026-11-27): 43 holes, all marched; 17.25 -> 24.63 dB, coverage 0.9640 -> 1.0000
-    // (17.44 -> 25.77 dB since normal_refine).
+    // (17.44 -> 25.77 dB since normal_refine; 17.57 -> 26.70 with its planes, 2026-12-06).
     EXPECT_GT(holes, 20u) << "the view should show PPR's holes";
     EXPECT_GE(filled * 10, holes * 9) << "the march finds nearly every hole's reflection";
     EXPECT_GT(after.coverage, before.coverage);
