@@ -9,7 +9,7 @@ namespace ppr::app {
 enum class PprFallback : uint32_t { Ssr, None, SsrHoles };
 enum class NormalMap : uint32_t { Off, Approx, Raymarch };
 // normalmap=raymarch's search for where the mapped ray meets what it reflects: none (the slides' taps),
-// tangent planes (then the taps), or the walk and bisection from the taken tap.
+// the surfaces' planes (then the taps), or the walk and bisection from the taken tap.
 enum class NormalRefine : uint32_t { Off, Planes, Walk };
 enum class EnvSource : uint32_t { Sky, Probe };
 // PPR hole filling: none, the depth-aware rule (passes/ppr_common/ppr_resolve.glsl), or the slides' rule.

@@ -171,8 +171,8 @@ const std::vector<SettingDecl>& settingDecls() {
         choice<NormalRefine>("normal_refine", "ppr", [](FrameSettings& s) -> NormalRefine& { return s.ppr.normalRefine; }, {"0", "1", "walk"}, "1",
                              "normalmap=raymarch: find where the ray meets what it reflects. 1: where it crosses the plane (from the "
                              "depth buffer) of the surface the flat reflection sees (then of the one seen there), if the depth buffer "
-                             "shows that plane there, else the taps; walk: walk on past an approximated point that is not hidden and bisect after a "
-                             "hidden tap (the search before 1, slower); 0: the slides' 4 taps alone"),
+                             "shows that plane there, else the taps; walk: walk on past an approximated point that is not hidden and "
+                             "bisect after a hidden tap (the search before 1, slower); 0: the slides' 4 taps alone"),
         toggle("contact", "ppr", [](FrameSettings& s) -> bool& { return s.ppr.contact; }, true,
                "holes=1: 4 depth-tested taps (2, 4, 8, 16 px) from each reflector pixel toward the point it reflects find "
                "what the main view hides in between, such as the underside of an object standing on the reflector; not on "

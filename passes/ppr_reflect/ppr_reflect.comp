@@ -109,7 +109,7 @@ vec3 depthPlaneNormal(ivec2 p, vec3 shown) {
 // kPprNormalPlaneGuesses planes in all. Three depth reads a plane, where a march toward the crossing
 // reads one a step and ends within a step of it: on the flat faces most reflected points lie on, the
 // plane's crossing is the hit. The tests are written to fail on NaN (a plane read off the sky).
-bool tangentPlaneHit(vec3 surface, vec3 dir, float reach, ivec2 seenPix, vec3 seenPoint, out vec2 hitPixel) {
+bool surfacePlaneHit(vec3 surface, vec3 dir, float reach, ivec2 seenPix, vec3 seenPoint, out vec2 hitPixel) {
     for (uint k = 0u; k < kPprNormalPlaneGuesses; ++k) {
         vec3 planeNormal = depthPlaneNormal(seenPix, seenPoint);
         float facing = dot(dir, planeNormal);
@@ -175,8 +175,8 @@ void walkToCrossing(vec3 surface, vec3 dir, float dist, float step, float t, boo
 // reflected about the normal-mapped normal. approx: the point that far along that ray, projected.
 // raymarch: kPprNormalTaps points from there back toward the reflecting pixel; the first one not
 // hidden behind the depth buffer is taken (an approximated point behind a nearer object would fetch
-// that object: the disocclusion the slides show). normal_refine=1 tries the tangent planes first
-// (tangentPlaneHit), the taps where none is shown there; normal_refine=walk searches from the
+// that object: the disocclusion the slides show). normal_refine=1 tries the surfaces' planes first
+// (surfacePlaneHit), the taps where none is shown there; normal_refine=walk searches from the
 // taken tap (walkToCrossing). False: keep the flat reflection.
 bool normalMappedHit(vec3 surface, vec3 dir, vec2 flatSource, out vec2 hitPixel) {
     ivec2 src = clamp(ivec2(flatSource), ivec2(0), ivec2(frame.screenSize) - 1);
@@ -187,7 +187,7 @@ bool normalMappedHit(vec3 surface, vec3 dir, vec2 flatSource, out vec2 hitPixel)
     float w;
     if ((pc.flags & kPprNormalRaymarch) == 0u) return projectToScreen(surface + dir * dist, hitPixel, w);
     bool walk = (pc.flags & kPprNormalWalk) != 0u;
-    if (!walk && (pc.flags & kPprNormalRefine) != 0u && tangentPlaneHit(surface, dir, dist * kPprNormalPlaneReach, src, flatPoint, hitPixel))
+    if (!walk && (pc.flags & kPprNormalRefine) != 0u && surfacePlaneHit(surface, dir, dist * kPprNormalPlaneReach, src, flatPoint, hitPixel))
         return true;
     float step = dist / float(kPprNormalTaps);
     bool previousHidden = false;  // the point farther along the ray lies on screen behind the depth buffer
