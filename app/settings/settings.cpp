@@ -176,7 +176,7 @@ const std::vector<SettingDecl>& settingDecls() {
         toggle("contact", "ppr", [](FrameSettings& s) -> bool& { return s.ppr.contact; }, true,
                "holes=1: 4 depth-tested taps (2, 4, 8, 16 px) from each reflector pixel toward the point it reflects find "
                "what the main view hides in between, such as the underside of an object standing on the reflector; not on "
-               "normal-mapped pixels with normalmap=raymarch (but normal_refine=walk), whose search follows the mapped ray "
+               "normal-mapped pixels with normalmap=approx|raymarch (but normal_refine=walk), which follow the mapped ray "
                "(0: off)"),
         choice<RtCoverage>("rt_coverage", "raytraced", [](FrameSettings& s) -> RtCoverage& { return s.raytrace.coverage; }, {"exact", "raster"},
                            "exact",

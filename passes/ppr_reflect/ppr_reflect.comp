@@ -386,10 +386,10 @@ void main() {
         mappedCos = dot(mapped, flatNormal);
         if (mappedCos < kFlatNormalCos) n = mapped;
     }
-    // raymarch (but normal_refine=walk, as before) searches the mapped ray itself on a normal-mapped
-    // pixel: no contact march along the flat one.
-    bool mappedRaymarch = n != flatNormal && (pc.flags & kPprNormalRaymarch) != 0u && (pc.flags & kPprNormalWalk) == 0u;
-    bool contacted = r.valid && !mappedRaymarch && (pc.flags & kPprContactMarch) != 0u &&
+    // A normal-mapped pixel (approx, raymarch) reflects along the mapped ray, not the flat one: no
+    // contact march along the flat one (but with normal_refine=walk, which keeps the old pictures).
+    bool followsMappedRay = n != flatNormal && (pc.flags & kPprNormalWalk) == 0u;
+    bool contacted = r.valid && !followsMappedRay && (pc.flags & kPprContactMarch) != 0u &&
                      contactHit(pix, surface, reflect(normalize(surface - frame.cameraPos.xyz), flatNormal), r.source, contact);
     if (contacted) {
         colorKnown = true;
