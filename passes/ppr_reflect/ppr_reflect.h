@@ -21,8 +21,9 @@ PPR_CONST(uint, kPprHoleEnclosed, 256u)
 // TAA's reflection history: also write the reflected path length per pixel (outDistance).
 PPR_CONST(uint, kPprWriteDistance, 512u)
 // --set normal_refine=1: raymarch first tries where the ray crosses the plane (from the depth buffer)
-// of the surface the flat reflection sees (ppr_reflect.comp surfacePlaneHit). With kPprNormalWalk (normal_refine=walk,
-// the search before it) it walks and bisects from the taken tap instead (walkToCrossing).
+// of the surface the flat reflection sees (normal_map_hit.glsl surfacePlaneHit). With kPprNormalWalk
+// (normal_refine=walk, the search before it) it walks and bisects from the taken tap instead
+// (walkToCrossing).
 PPR_CONST(uint, kPprNormalRefine, 1024u)
 PPR_CONST(uint, kPprNormalWalk, 8192u)
 // --set contact=1 (with holes=1): a short march from each reflector pixel toward the point its data
