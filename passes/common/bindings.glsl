@@ -12,6 +12,9 @@ vec3 worldFromDepth(vec2 uv, float depth) {
     return p.xyz / p.w;
 }
 
+// The world position at pixel `pix`'s centre with depth `depth` (reverse-Z, as the depth buffer).
+vec3 worldOfPixel(ivec2 pix, float depth) { return worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depth); }
+
 // The NDC of pixel `pix`'s centre, to the bit as worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, ·)
 // computes it (the tile box of ppr_common/tile_box.h relies on the same x and y).
 vec2 ndcOfPixelCentre(ivec2 pix) { return ((vec2(pix) + 0.5) * frame.invScreenSize) * 2.0 - 1.0; }

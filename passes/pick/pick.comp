@@ -13,7 +13,7 @@ layout(push_constant, scalar) uniform Push { PickPush pc; };
 
 vec3 worldAt(ivec2 q) {
     q = clamp(q, ivec2(0), ivec2(frame.screenSize) - 1);
-    return worldFromDepth((vec2(q) + 0.5) * frame.invScreenSize, texelFetch(depthTex, q, 0).r);
+    return worldOfPixel(q, texelFetch(depthTex, q, 0).r);
 }
 
 // p(q + step) − p(q) or p(q) − p(q − step), whichever neighbour lies nearer in depth.

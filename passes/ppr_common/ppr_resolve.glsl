@@ -294,14 +294,20 @@ PprResolved pprLocate(ivec2 texel, vec2 screenCentre, float pixelsPerTexel, uint
     return r;
 }
 
+// The lit scene filtered at screen position `centre` (pixels): one bilinear tap, or where a minified
+// footprint gives `halfStep`, the mean of two taps that far on either side (a box filter).
+vec3 footprintSample(vec2 centre, vec2 halfStep) {
+    if (halfStep == vec2(0.0)) return textureLod(sceneLinear, centre * frame.invScreenSize, 0.0).rgb;
+    return 0.5 * (textureLod(sceneLinear, (centre + halfStep) * frame.invScreenSize, 0.0).rgb +
+                  textureLod(sceneLinear, (centre - halfStep) * frame.invScreenSize, 0.0).rgb);
+}
+
 // The colour at a located texel (valid): the point sample, or the filtered one (two taps where
 // minified) with anti-bleeding.
 vec3 pprColor(PprResolved r, uint flags) {
     vec3 unfiltered = textureLod(scenePoint, r.source * frame.invScreenSize, 0.0).rgb;
     if ((flags & kPprFiltering) == 0u) return unfiltered;
-    vec3 filtered = r.halfStep == vec2(0.0) ? textureLod(sceneLinear, r.filtered * frame.invScreenSize, 0.0).rgb
-                                            : 0.5 * (textureLod(sceneLinear, (r.filtered + r.halfStep) * frame.invScreenSize, 0.0).rgb +
-                                                     textureLod(sceneLinear, (r.filtered - r.halfStep) * frame.invScreenSize, 0.0).rgb);
+    vec3 filtered = footprintSample(r.filtered, r.halfStep);
     return (flags & kPprAntiBleeding) != 0u ? reduceColorBleeding(filtered, unfiltered, r.bleedStrength) : filtered;
 }
 

@@ -13,7 +13,7 @@ bool visibleAlongRay(vec3 surface, vec3 dir, float t, out vec2 pixel, out bool o
 }
 
 // The world position the depth buffer shows at pixel `p`.
-vec3 shownPoint(ivec2 p) { return worldFromDepth((vec2(p) + 0.5) * frame.invScreenSize, texelFetch(depthTex, p, 0).r); }
+vec3 shownPoint(ivec2 p) { return worldOfPixel(p, texelFetch(depthTex, p, 0).r); }
 
 // The plane of the surface shown at pixel `p` (world position `shown`): its normal from the positions
 // shown there and at the next pixel across and down (the previous one on the screen's last column or
@@ -45,7 +45,7 @@ bool surfacePlaneHit(vec3 surface, vec3 dir, float reach, ivec2 seenPix, vec3 se
         ivec2 shownPix = ivec2(hitPixel);
         float depth = texelFetch(depthTex, shownPix, 0).r;
         if (depth <= 0.0) return false;
-        vec3 shown = worldFromDepth((vec2(shownPix) + 0.5) * frame.invScreenSize, depth);
+        vec3 shown = worldOfPixel(shownPix, depth);
         if (abs(dot(shown - seenPoint, planeNormal)) < kPprNormalPlaneTolerance * frame.cameraPos.w / depth) return true;
         seenPix = shownPix;
         seenPoint = shown;
@@ -107,7 +107,7 @@ bool normalMappedHit(vec3 surface, vec3 dir, vec2 flatSource, out vec2 hitPixel)
     ivec2 src = clamp(ivec2(flatSource), ivec2(0), ivec2(frame.screenSize) - 1);
     float srcDepth = texelFetch(depthTex, src, 0).r;
     if (srcDepth <= 0.0) return false;
-    vec3 flatPoint = worldFromDepth((vec2(src) + 0.5) * frame.invScreenSize, srcDepth);
+    vec3 flatPoint = worldOfPixel(src, srcDepth);
     float dist = distance(surface, flatPoint);
     float w;
     if ((pc.flags & kPprNormalRaymarch) == 0u) return projectToScreen(surface + dir * dist, hitPixel, w);

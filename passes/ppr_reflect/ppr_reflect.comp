@@ -39,8 +39,8 @@ layout(set = 0, binding = 16, scalar) writeonly buffer MappedHoleTiles { uint ma
 // position `seen` (pixels), with that point's motion slot.
 void storeDistance(ivec2 pix, vec2 seen) {
     ivec2 seenPix = clamp(ivec2(seen), ivec2(0), ivec2(frame.screenSize) - 1);
-    vec3 surface = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, texelFetch(depthTex, pix, 0).r);
-    vec3 reflected = worldFromDepth((vec2(seenPix) + 0.5) * frame.invScreenSize, texelFetch(depthTex, seenPix, 0).r);
+    vec3 surface = worldOfPixel(pix, texelFetch(depthTex, pix, 0).r);
+    vec3 reflected = worldOfPixel(seenPix, texelFetch(depthTex, seenPix, 0).r);
     imageStore(outDistance, pix, vec4(length(surface - frame.cameraPos.xyz) + length(reflected - surface),
                                       pathTag(motionSlotOf(texelFetch(materialTex, seenPix, 0)), 0u), 0.0, 0.0));
 }
@@ -102,7 +102,7 @@ bool rimContinuation(ivec2 pix, uint id, out vec2 source) {
         float depth = texelFetch(depthTex, q, 0).r;
         if (depth <= 0.0) continue;
         vec3 normal = reflectors[id - 1u].normal;
-        vec3 p = worldFromDepth((vec2(q) + 0.5) * frame.invScreenSize, depth);
+        vec3 p = worldOfPixel(q, depth);
         float height = dot(p - reflectors[id - 1u].center, normal);
         if (height <= kPprRimMinHeight * frame.cameraPos.w / depth) continue;  // view distance = near / depth
         vec2 image;
@@ -162,7 +162,7 @@ bool contactHit(ivec2 pix, vec3 surface, vec3 dir, vec2 source, out vec2 hitPixe
     float near = frame.cameraPos.w;
     float invFrom = texelFetch(depthTex, pix, 0).r / near, invTo = sourceDepth / near;
     // Sky: the ray's length to it is unknown; march the first metres of it.
-    float reach = sourceDepth > 0.0 ? distance(surface, worldFromDepth((vec2(sourcePix) + 0.5) * frame.invScreenSize, sourceDepth)) : 1.0 / invFrom;
+    float reach = sourceDepth > 0.0 ? distance(surface, worldOfPixel(sourcePix, sourceDepth)) : 1.0 / invFrom;
     ClipRay ray = ClipRay(frame.viewProj * vec4(surface, 1.0), frame.viewProj * vec4(dir, 0.0));
     float tap = kPprContactFirstTap, visible = 0.0;
     for (uint k = 0u; k < kPprContactTaps && tap < len; ++k, tap *= 2.0) {
@@ -251,7 +251,7 @@ void main() {
     }
     const uint normalModes = kPprNormalApprox | kPprNormalRaymarch;
     vec3 surface = (pc.flags & (normalModes | kPprEnvironment | kPprContactMarch)) != 0u
-                       ? worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, texelFetch(depthTex, pix, 0).r)
+                       ? worldOfPixel(pix, texelFetch(depthTex, pix, 0).r)
                        : vec3(0.0);
     vec3 flatNormal = reflectors[id - 1u].normal;
     vec2 contact;
@@ -296,9 +296,7 @@ void main() {
     if (n != flatNormal && dot(dir, flatNormal) > 0.0 && normalMappedHit(surface, dir, r.source, hit)) {
         // Averaged over the flat sample's footprint where that is minified (the normal map moves the
         // reflected point, not how much of the source one pixel covers).
-        color = r.halfStep == vec2(0.0) ? textureLod(sceneLinear, hit * frame.invScreenSize, 0.0).rgb
-                                        : 0.5 * (textureLod(sceneLinear, (hit + r.halfStep) * frame.invScreenSize, 0.0).rgb +
-                                                 textureLod(sceneLinear, (hit - r.halfStep) * frame.invScreenSize, 0.0).rgb);
+        color = footprintSample(hit, r.halfStep);
         seen = hit;
     } else {
         color = flatColor(r, colorKnown);
