@@ -44,7 +44,7 @@ void main() {
         // The reflection replaces the lit surface by the Fresnel term (Schlick, F0 from the material)
         // times the reflector's reflectance (or, off reflector rectangles, the surface's).
         float depth = texelFetch(depthTex, pix, 0).r;
-        vec3 world = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depth);
+        vec3 world = worldOfPixel(pix, depth);
         vec3 n = normalize(texelFetch(normalTex, pix, 0).xyz);
         vec3 albedo = texelFetch(albedoTex, pix, 0).rgb;
         float metallic = material.g;

@@ -35,6 +35,6 @@ void main() {
     vec4 h = frame.viewProj * vec4(frame.cameraPos.xyz + dir, 1.0);
     ivec2 src = clamp(ivec2(floor(pixelFromClip(h))), ivec2(0), ivec2(frame.screenSize) - 1);
     float depth = texelFetch(depthTex, src, 0).r;
-    float distance = depth > 0.0 ? length(worldFromDepth((vec2(src) + 0.5) * frame.invScreenSize, depth) - frame.cameraPos.xyz) : 0.0;
+    float distance = depth > 0.0 ? length(worldOfPixel(src, depth) - frame.cameraPos.xyz) : 0.0;
     imageStore(probe, ivec3(texel, int(pc.face)), vec4(texelFetch(litColor, src, 0).rgb, distance));
 }

@@ -12,7 +12,7 @@ bool visibleInMainView(sampler2D mainViewDepth, vec3 p, vec3 n) {
     ivec2 q = ivec2(uv * frame.screenSize);
     float depth = texelFetch(mainViewDepth, q, 0).r;
     if (depth <= 0.0) return false;
-    vec3 seen = worldFromDepth((vec2(q) + 0.5) * frame.invScreenSize, depth);
+    vec3 seen = worldOfPixel(q, depth);
     float tolerance = kPlanarVisibleTolerance + kPlanarVisibleTolerancePerMetre * distance(frame.cameraPos.xyz, p);
     return distance(seen, p) <= tolerance;
 }

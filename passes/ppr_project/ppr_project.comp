@@ -333,7 +333,7 @@ void main() {
         if (any(greaterThanEqual(pix, ivec2(frame.screenSize)))) continue;
         float depth = texelFetch(depthTex, pix, 0).r;
         if (depth <= 0.0) continue;  // sky: no position to mirror
-        vec3 p = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depth);
+        vec3 p = worldOfPixel(pix, depth);
         points[j] = vec4(p, 1.0);
         if (listed) continue;
         vec2 ndc = ndcOfPixelCentre(pix);

@@ -32,7 +32,7 @@ bool reflectorRay(ivec2 pix, uint id, out ReflectorData r, out vec3 n, out vec3 
     if (dot(eye - r.center, r.normal) <= 0.0 || !onPlane(r, d, origin)) return false;
     if ((pc.flags & kRaytraceNormalMapped) != 0u) {
         float depth = texelFetch(depthTex, pix, 0).r;
-        origin = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depth);
+        origin = worldOfPixel(pix, depth);
         n = normalize(texelFetch(normalTex, pix, 0).xyz);
         if (dot(n, d) >= 0.0) n = r.normal;  // a normal facing away from the eye: the plane's
     }

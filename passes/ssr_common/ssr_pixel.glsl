@@ -82,7 +82,7 @@ float ssrScreenExit(vec2 p0, vec2 p1) {
 }
 
 bool ssrSetupRay(ivec2 pix, float depth, uint reflectorId, out SsrRay ray) {
-    vec3 world = worldFromDepth((vec2(pix) + 0.5) * frame.invScreenSize, depth);
+    vec3 world = worldOfPixel(pix, depth);
     vec3 mapped = normalize(texelFetch(normalTex, pix, 0).xyz);
     vec3 n = mapped;
     // Reflector pixels: the reflector's plane, as PPR and planar see it; with normal maps on, the
