@@ -1,6 +1,7 @@
 // `ppr compare --path`: TAA and the techniques under camera motion. Per frame of the path the
 // reference technique is rendered 16 times with Halton jitter and the images averaged (the
-// supersampled reference, TAA off), and once more unjittered for its reflector pixels. Then each
+// supersampled reference, TAA off), and once more unjittered for its reflector pixels (which of them
+// are compare's scored pixels, the reflected point on screen and unoccluded, and which are not). Then each
 // --technique row renders the whole path as one shot (its TAA history carries from frame to frame)
 // and every frame is scored against that frame's reference.
 #include "compare/compare.hpp"
@@ -22,7 +23,9 @@ namespace {
 
 struct ReferenceFrame {
     util::Rgba8Image supersampled;
-    FloatImage reflectorPixels;  // allReflectorPixels of the reference's reflection: the reflector mask
+    // The unjittered reference's reflection: its alpha is kReflectionHit at compare's scored pixels
+    // (compositedPsnrDb's mask); allReflectorPixels of it marks every reflector pixel.
+    FloatImage reflection;
 };
 
 std::string frameFile(const std::string& folder, size_t frame) {
@@ -64,7 +67,7 @@ int runComparePath(const Options& o) {
             for (size_t i = 0; i < poses.size(); ++i) {
                 headless.setSceneTime(scene::cameraPathSceneTime(o.path, uint32_t(i)));
                 reference[i].supersampled = headless.captureSupersampled(poses[i], extent, scene::kJitterLength);
-                reference[i].reflectorPixels = allReflectorPixels(headless.capture(poses[i], extent, 1, false, true).reflection);
+                reference[i].reflection = headless.capture(poses[i], extent, 1, false, true).reflection;
             }
             headless.settings() = shared;
         }
@@ -83,7 +86,7 @@ int runComparePath(const Options& o) {
         metrics["reference_samples"] = scene::kJitterLength;
         metrics["techniques"] = nlohmann::json::object();
         std::ostringstream csv;
-        csv << "technique,frame,x,y,z,yaw_deg,pitch_deg,psnr_db,reflector_psnr_db,change,excess_change,frame_gpu_ms\n";
+        csv << "technique,frame,x,y,z,yaw_deg,pitch_deg,psnr_db,reflector_psnr_db,change,excess_change,frame_gpu_ms,scored_psnr_db\n";
         PlotSpec whole{"whole frame vs " + std::to_string(scene::kJitterLength) + "x supersampled " + o.reference, "frame", "PSNR (dB)"};
         PlotSpec reflectors{"reflector pixels", "frame", "PSNR (dB)"};
         // strip.png: per row the middle and the last frame, each beside its error on reflector pixels.
@@ -100,9 +103,11 @@ int runComparePath(const Options& o) {
             for (size_t i = 0; i < poses.size(); ++i) {
                 headless.setSceneTime(scene::cameraPathSceneTime(o.path, uint32_t(i)));
                 const CaptureResult r = headless.capture(poses[i], extent, 1, false, false, i == 0);
+                const FloatImage reflectorPixels = allReflectorPixels(reference[i].reflection);
                 TemporalFrame f;
                 f.psnrDb = imagePsnrDb(r.image, reference[i].supersampled);
-                f.reflectorPsnrDb = compositedPsnrDb(r.image, reference[i].supersampled, reference[i].reflectorPixels);
+                f.reflectorPsnrDb = compositedPsnrDb(r.image, reference[i].supersampled, reflectorPixels);
+                f.scoredPsnrDb = compositedPsnrDb(r.image, reference[i].supersampled, reference[i].reflection);
                 f.change = i ? meanAbsoluteChange(r.image, previous) : 0.0;
                 f.excessChange = i ? meanAbsoluteExcessChange(r.image, previous, reference[i].supersampled, reference[i - 1].supersampled) : 0.0;
                 frames.push_back(f);
@@ -112,11 +117,11 @@ int runComparePath(const Options& o) {
                     char label[64];
                     std::snprintf(label, sizeof label, " f%zu %.1f dB", i, f.reflectorPsnrDb);
                     strip.push_back({stripName(t) + label, r.image});
-                    strip.push_back({"error (white = 0.25)", displayErrorHeatMap(r.image, reference[i].supersampled, reference[i].reflectorPixels)});
+                    strip.push_back({"error (white = 0.25)", displayErrorHeatMap(r.image, reference[i].supersampled, reflectorPixels)});
                 }
                 const scene::CameraPose& p = poses[i];
                 csv << '"' << t << "\"," << i << ',' << p.position.x << ',' << p.position.y << ',' << p.position.z << ',' << p.yawDeg << ','
-                    << p.pitchDeg << ',' << f.psnrDb << ',' << f.reflectorPsnrDb << ',' << f.change << ',' << f.excessChange << ',' << r.totalMedianMs << '\n';
+                    << p.pitchDeg << ',' << f.psnrDb << ',' << f.reflectorPsnrDb << ',' << f.change << ',' << f.excessChange << ',' << r.totalMedianMs << ',' << f.scoredPsnrDb << '\n';
                 wholeSeries.x.push_back(double(i));
                 wholeSeries.y.push_back(std::min(f.psnrDb, 60.0));
                 reflectorSeries.x.push_back(double(i));
@@ -127,6 +132,7 @@ int runComparePath(const Options& o) {
             const TemporalSummary s = summarizeTemporal(frames, still, scene::kJitterLength);
             const nlohmann::json temporal = {{"psnr_db_mean", s.psnrDbMean},
                                              {"reflector_psnr_db_mean", s.reflectorPsnrDbMean},
+                                             {"scored_psnr_db_mean", s.scoredPsnrDbMean},
                                              {"flicker", s.flicker ? nlohmann::json(*s.flicker) : nlohmann::json(nullptr)},
                                              {"frames", s.frames}};
             metrics["techniques"][t] = {{"temporal", temporal}, {"frame_gpu_ms", median(frameMs)}, {"frames_dir", "frames_" + variantFileName(t)}};
@@ -134,8 +140,8 @@ int runComparePath(const Options& o) {
             summary["cameras"][cam.name][t] = {{"temporal", temporal}};
             whole.series.push_back(wholeSeries);
             reflectors.series.push_back(reflectorSeries);
-            std::printf("ppr: %-8s %-14s %s, %u frames: PSNR %6.2f dB mean, reflector pixels %6.2f dB mean", cam.name.c_str(), t.c_str(),
-                        o.path.c_str(), s.frames, s.psnrDbMean, s.reflectorPsnrDbMean);
+            std::printf("ppr: %-8s %-14s %s, %u frames: PSNR %6.2f dB mean, reflector pixels %6.2f dB mean, scored pixels %6.2f dB mean",
+                        cam.name.c_str(), t.c_str(), o.path.c_str(), s.frames, s.psnrDbMean, s.reflectorPsnrDbMean, s.scoredPsnrDbMean);
             if (s.flicker) std::printf(", flicker %.3f levels", *s.flicker);
             std::printf("\n");
         }

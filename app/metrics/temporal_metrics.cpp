@@ -64,6 +64,7 @@ TemporalSummary summarizeTemporal(const std::vector<TemporalFrame>& frames, bool
     for (const TemporalFrame& f : frames) {
         s.psnrDbMean += f.psnrDb / double(frames.size());
         s.reflectorPsnrDbMean += f.reflectorPsnrDb / double(frames.size());
+        s.scoredPsnrDbMean += f.scoredPsnrDb / double(frames.size());
     }
     if (still) {
         // Frame 0 has no previous frame: a single frame has nothing to flicker with.

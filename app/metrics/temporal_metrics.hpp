@@ -1,7 +1,8 @@
 #pragma once
 // Scores of a camera path run (compare --path, docs/temporal.md): per frame PSNR against the
-// supersampled reference, over the whole frame and over reflector pixels, and the frame-to-frame
-// change that is flicker when the camera stands still.
+// supersampled reference, over the whole frame, over reflector pixels and over the reflector pixels a
+// screen-space technique can reflect, and the frame-to-frame change that is flicker when the camera
+// stands still.
 #include "metrics/compare_metrics.hpp"
 #include "util/image_io.hpp"
 
@@ -34,10 +35,11 @@ struct TemporalFrame {
     double reflectorPsnrDb = 0.0;  // reflector pixels only
     double change = 0.0;           // meanAbsoluteChange from the previous frame (0 on the first)
     double excessChange = 0.0;     // meanAbsoluteExcessChange: the change the reference does not make
+    double scoredPsnrDb = 0.0;     // compare's scored pixels: reflector pixels whose reflected point is on screen and unoccluded
 };
 
 struct TemporalSummary {
-    double psnrDbMean = 0.0, reflectorPsnrDbMean = 0.0;
+    double psnrDbMean = 0.0, reflectorPsnrDbMean = 0.0, scoredPsnrDbMean = 0.0;
     std::optional<double> flicker;  // still camera only: the mean excess change after convergence
     uint32_t frames = 0;
     uint32_t settledFrom = 0;       // first frame flicker counts (still camera)

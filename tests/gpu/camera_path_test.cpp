@@ -82,10 +82,14 @@ TEST(CameraPathRun, CompareScoresEveryFrameOfAStrafe) {
     EXPECT_EQ(m["still"], false);
     for (const char* t : {"ppr", "ppr@taa=1"}) {
         const nlohmann::json& temporal = m["techniques"][t]["temporal"];
-        for (const char* key : {"psnr_db_mean", "reflector_psnr_db_mean", "flicker", "frames"}) EXPECT_TRUE(temporal.contains(key)) << t << key;
+        for (const char* key : {"psnr_db_mean", "reflector_psnr_db_mean", "scored_psnr_db_mean", "flicker", "frames"})
+            EXPECT_TRUE(temporal.contains(key)) << t << key;
         EXPECT_EQ(temporal["frames"], 4);
         EXPECT_TRUE(temporal["flicker"].is_null()) << "flicker is measured on a still camera only";
         EXPECT_GT(temporal["psnr_db_mean"].get<double>(), 15.0) << t;
+        // PPR leaves the puddles' off-screen reflections (sky, the walls behind the camera) black
+        // (fallback_env=0): the reflector pixels score them, the scored pixels leave them out.
+        EXPECT_GT(temporal["scored_psnr_db_mean"].get<double>(), temporal["reflector_psnr_db_mean"].get<double>() + 3.0) << t;
         EXPECT_TRUE(std::filesystem::exists(dir / m["techniques"][t]["frames_dir"].get<std::string>() / "frame_003.png")) << t;
     }
     EXPECT_EQ(lineCount(dir / "temporal.csv"), 1u + 2u * 4u);

@@ -47,10 +47,11 @@ TEST(TemporalMetrics, ExcessChangeIsTheChangeTheReferenceDoesNotMake) {
 TEST(TemporalMetrics, MeansOverEveryFrameFlickerOnlyWhenStillAndSettled) {
     std::vector<TemporalFrame> frames;
     // Flicker counts the change the reference does not make (excessChange), not the raw change.
-    for (int i = 0; i < 40; ++i) frames.push_back({30.0 + i % 2, 20.0, 5.0, i < 16 ? 9.0 : 1.0});
+    for (int i = 0; i < 40; ++i) frames.push_back({30.0 + i % 2, 20.0, 5.0, i < 16 ? 9.0 : 1.0, 25.0 + i % 4});
     const TemporalSummary moving = summarizeTemporal(frames, false, 16);
     EXPECT_DOUBLE_EQ(moving.psnrDbMean, 30.5);
     EXPECT_DOUBLE_EQ(moving.reflectorPsnrDbMean, 20.0);
+    EXPECT_DOUBLE_EQ(moving.scoredPsnrDbMean, 26.5);
     EXPECT_FALSE(moving.flicker.has_value());
     EXPECT_EQ(moving.frames, 40u);
     const TemporalSummary still = summarizeTemporal(frames, true, 16);
