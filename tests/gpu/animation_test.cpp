@@ -195,7 +195,8 @@ TEST(Animation, AnimatePathRunsTheClockOnAStillCamera) {
         std::vector<double> v;
         std::stringstream fields(line.substr(6));
         for (std::string x; std::getline(fields, x, ',');) v.push_back(std::stod(x));
-        ASSERT_EQ(v.size(), 11u) << line;  // after the name: frame, x, y, z, yaw, pitch, psnr, reflector psnr, change, excess, ms
+        // after the name: frame, x, y, z, yaw, pitch, psnr, reflector psnr, change, excess, ms, scored psnr
+        ASSERT_EQ(v.size(), 12u) << line;
         EXPECT_GE(v[9], 0.0) << line;
         ++rows;
     }
