@@ -4,6 +4,7 @@
 #include "capture/report.hpp"
 #include "cli/scene_source.hpp"
 #include "metrics/compare_metrics.hpp"
+#include "metrics/median.hpp"
 #include "render/headless.hpp"
 #include "scene/stress_scene.hpp"
 #include "techniques/technique_table.hpp"
@@ -65,9 +66,25 @@ struct Rig {
 };
 
 struct Measured {
-    std::map<std::string, double> passMs;
+    std::map<std::string, double> passMs;  // with rounds: the median per pass over them
     double frameMs = 0.0;
     CaptureResult last;  // the last frame (image, reflection when asked, counters)
+    std::vector<std::map<std::string, double>> roundPassMs;  // each round's per-pass medians (--rounds)
+    std::vector<double> roundFrameMs;
+
+    // Adds a round's measurement: its last frame replaces the one kept.
+    void addRound(Measured round) {
+        roundPassMs.push_back(std::move(round.passMs));
+        roundFrameMs.push_back(round.frameMs);
+        last = std::move(round.last);
+        passMs = medianPerPass(roundPassMs);
+        frameMs = median(roundFrameMs);
+    }
+    // The round-th round's time of one pass (0 when it did not run).
+    double roundPass(size_t round, const std::string& name) const {
+        const auto it = roundPassMs[round].find(name);
+        return it == roundPassMs[round].end() ? 0.0 : it->second;
+    }
 };
 
 double passOr0(const std::map<std::string, double>& m, const std::string& name) {
@@ -93,7 +110,7 @@ public:
         if (techniques) steps += static_cast<uint32_t>(techniqueList().size()) + (hasPlanar() ? 0 : 1);
         if (reflectors) steps += 2 * static_cast<uint32_t>(std::size(kSweepReflectorCounts));
         if (coverage) steps += 2 * static_cast<uint32_t>(std::size(kCoverageCameras));
-        progress_ = std::make_unique<Progress>(steps);
+        progress_ = std::make_unique<Progress>(steps * o_.rounds);
         if (techniques) runTechniques();
         if (reflectors) runReflectors();
         if (coverage) runCoverage();
@@ -156,12 +173,13 @@ private:
         if (!hasPlanar()) list.insert(list.begin(), "planar");  // the reference, not listed
         const float exposure = rig.headless->settings().values().view.exposure;
         std::map<std::string, Measured> measured;
-        for (const std::string& t : list) {
-            progress_->step("technique " + t + " on " + cam.name);
-            const Settings shared = rig.headless->setVariant(t);
-            measured[t] = measure(rig, cam.pose, true);
-            rig.headless->settings() = shared;
-        }
+        for (uint32_t round = 0; round < o_.rounds; ++round)
+            for (const std::string& t : list) {
+                progress_->step("technique " + t + " on " + cam.name + roundLabel(round));
+                const Settings shared = rig.headless->setVariant(t);
+                measured[t].addRound(measure(rig, cam.pose, round + 1 == o_.rounds));  // the images of the last round
+                rig.headless->settings() = shared;
+            }
         const Measured& reference = measured.at("planar");
         for (const std::string& t : rows) {
             const Measured& m = measured.at(t);
@@ -169,6 +187,7 @@ private:
             row.name = t;
             row.passMs = m.passMs;
             row.passOrder = m.last.passOrder;
+            if (o_.rounds > 1) row.roundPassMs = m.roundPassMs;
             row.frameMs = m.frameMs;
             const std::string name = parseTechniqueVariant(t).name;
             row.techniqueMs = techniqueCost(name, m.passMs);
@@ -193,14 +212,21 @@ private:
     void runReflectors() {
         results_.reflectorsScene = "stress:N";
         results_.reflectorsCamera = "overview";
-        for (uint32_t n : kSweepReflectorCounts) {
-            Rig rig(*ctx_, scene::makeStressScene(n), o_);
-            rig.headless->setTechnique("ppr");
-            const scene::CameraPose camera = rig.camera("overview");
+        std::map<std::pair<uint32_t, bool>, Measured> measured;  // (reflectors, tiles)
+        for (uint32_t round = 0; round < o_.rounds; ++round)
+            for (uint32_t n : kSweepReflectorCounts) {
+                Rig rig(*ctx_, scene::makeStressScene(n), o_);
+                rig.headless->setTechnique("ppr");
+                const scene::CameraPose camera = rig.camera("overview");
+                for (bool tiles : {true, false}) {
+                    progress_->step("reflectors N=" + std::to_string(n) + " tiles=" + (tiles ? "1" : "0") + roundLabel(round));
+                    rig.headless->settings().set("tiles", tiles ? "1" : "0");
+                    measured[{n, tiles}].addRound(measure(rig, camera, false));
+                }
+            }
+        for (uint32_t n : kSweepReflectorCounts)
             for (bool tiles : {true, false}) {
-                progress_->step("reflectors N=" + std::to_string(n) + " tiles=" + (tiles ? "1" : "0"));
-                rig.headless->settings().set("tiles", tiles ? "1" : "0");
-                const Measured m = measure(rig, camera, false);
+                const Measured& m = measured.at({n, tiles});
                 BenchReflectorRow row;
                 row.reflectors = n;
                 row.tiles = tiles;
@@ -208,13 +234,16 @@ private:
                 row.boundsMs = passOr0(m.passMs, "ppr.bounds");
                 row.reachMs = passOr0(m.passMs, "ppr.reach");
                 row.techniqueMs = techniqueCost("ppr", m.passMs);
+                for (size_t round = 0; o_.rounds > 1 && round < m.roundPassMs.size(); ++round) {
+                    row.roundProjectMs.push_back(m.roundPass(round, "ppr.project"));
+                    row.roundReachMs.push_back(m.roundPass(round, "ppr.reach"));
+                }
                 if (m.last.pprStats) {
                     row.pairs = m.last.pprStats->reflectorTilePairs;
                     row.pairsUnculled = uint64_t(m.last.pprStats->tilesWithContent) * std::min(n, gpu::kPprMaxReflectors);
                 }
                 results_.reflectors.push_back(row);
             }
-        }
     }
 
     void runCoverage() {
@@ -222,27 +251,43 @@ private:
         Rig rig(*ctx_, scene::makeStressScene(kCoverageSceneTiles), o_);
         rig.headless->setTechnique("ppr");
         const uint32_t tiles = gpu::pprTilesCovering(extent_.width) * gpu::pprTilesCovering(extent_.height);
-        for (const char* name : kCoverageCameras) {
-            const scene::CameraPose camera = rig.camera(name);
+        std::map<std::pair<std::string, bool>, Measured> measured;  // (camera, indirect)
+        for (uint32_t round = 0; round < o_.rounds; ++round)
+            for (const char* name : kCoverageCameras) {
+                const scene::CameraPose camera = rig.camera(name);
+                for (bool indirect : {true, false}) {
+                    progress_->step(std::string("coverage ") + name + " indirect=" + (indirect ? "1" : "0") + roundLabel(round));
+                    rig.headless->settings().set("indirect", indirect ? "1" : "0");
+                    measured[{name, indirect}].addRound(measure(rig, camera, false));
+                }
+            }
+        for (const char* name : kCoverageCameras)
             for (bool indirect : {true, false}) {
-                progress_->step(std::string("coverage ") + name + " indirect=" + (indirect ? "1" : "0"));
-                rig.headless->settings().set("indirect", indirect ? "1" : "0");
-                const Measured m = measure(rig, camera, false);
+                const Measured& m = measured.at({name, indirect});
                 BenchCoverageRow row;
                 row.camera = name;
                 row.indirect = indirect;
                 row.reflectMs = passOr0(m.passMs, "ppr.reflect");
                 row.clearMs = passOr0(m.passMs, "ppr.reflection.clear");
                 row.classifyMs = passOr0(m.passMs, "tiles.classify");
+                for (size_t round = 0; o_.rounds > 1 && round < m.roundPassMs.size(); ++round) {
+                    row.roundReflectMs.push_back(m.roundPass(round, "ppr.reflect"));
+                    row.roundClearMs.push_back(m.roundPass(round, "ppr.reflection.clear"));
+                }
                 if (m.last.pprStats) row.reflectiveTiles = double(m.last.pprStats->dispatch[gpu::kTileClassPlanar].x) / tiles;
                 results_.coverage.push_back(row);
             }
-        }
+    }
+
+    // " (round r/N)" in the progress line when there are rounds.
+    std::string roundLabel(uint32_t round) const {
+        return o_.rounds > 1 ? " (round " + std::to_string(round + 1) + "/" + std::to_string(o_.rounds) + ")" : "";
     }
 
     std::string commandLine() const {
         std::string c = "ppr bench --size " + std::to_string(extent_.width) + "x" + std::to_string(extent_.height) + " --frames " +
                         std::to_string(frames_) + " --warmup " + std::to_string(o_.warmup);
+        if (o_.rounds > 1) c += " --rounds " + std::to_string(o_.rounds);
         if (o_.sweeps != benchSweepNames())
             for (const std::string& s : o_.sweeps) c += " --sweep " + s;
         if (!o_.scene.empty()) c += " --scene " + o_.scene;
@@ -262,6 +307,7 @@ private:
                            {"size", {extent_.width, extent_.height}},
                            {"frames", frames_},
                            {"warmup", o_.warmup},
+                           {"rounds", o_.rounds},
                            {"command", commandLine()},
                            {"environment",
                             {{"LP_NUM_THREADS", threads ? threads : ""}, {"MESA_SHADER_CACHE_DISABLE", cache ? cache : ""}}},

@@ -1,6 +1,7 @@
 #include "bench/bench_report.hpp"
 
 #include "bench/bench_plot.hpp"
+#include "metrics/median.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -102,6 +103,41 @@ nlohmann::json techniqueJson(const BenchResults& r, const BenchTechnique& t) {
     return e;
 }
 
+// The results as round i measured them (--rounds): each technique's passes that round.
+BenchResults resultsInRound(const BenchResults& r, size_t round) {
+    BenchResults out = r;
+    for (BenchTechnique& t : out.techniques) t = techniqueInRound(t, round);
+    return out;
+}
+
+// A value of each round's results (absent in any round: no list).
+std::optional<std::vector<double>> perRound(const std::vector<BenchResults>& rounds,
+                                            const std::function<std::optional<double>(const BenchResults&)>& value) {
+    std::vector<double> out;
+    for (const BenchResults& round : rounds) {
+        const std::optional<double> v = value(round);
+        if (!v) return std::nullopt;
+        out.push_back(*v);
+    }
+    return out;
+}
+
+// The per-round lists of a technique's measures (bench.json "<key>_rounds"), for --rounds.
+void addRounds(nlohmann::json& e, const std::vector<BenchResults>& rounds, const std::string& technique) {
+    auto add = [&](const std::string& key, const std::function<std::optional<double>(const BenchResults&, const BenchTechnique&)>& value) {
+        const auto list = perRound(rounds, [&](const BenchResults& round) { return value(round, *findTechnique(round, technique)); });
+        if (list) e[key + "_rounds"] = *list;
+    };
+    add("gpu_ms", [](const BenchResults&, const BenchTechnique& t) { return std::optional<double>(t.techniqueMs); });
+    add("ratio_to_ppr", [](const BenchResults& r, const BenchTechnique& t) { return benchRatio(r, t.techniqueMs, "ppr"); });
+    add("ratio_to_floor", [](const BenchResults& r, const BenchTechnique& t) { return benchRatio(r, t.techniqueMs, "floor"); });
+    add("planar_gpu_ms", [](const BenchResults&, const BenchTechnique& t) {
+        const auto parts = pprCostParts(t);
+        return parts ? std::optional<double>(parts->planar) : std::nullopt;
+    });
+    add("taa_gpu_ms", [](const BenchResults&, const BenchTechnique& t) { return taaMs(t); });
+}
+
 std::string techniquesTable(const BenchResults& r) {
     std::string md = "| technique | GPU ms | × PPR | × floor | PSNR dB | reflection PSNR dB | coverage | frame ms |\n"
                      "|---|---:|---:|---:|---:|---:|---:|---:|\n";
@@ -191,6 +227,90 @@ std::string slidesTable(const BenchResults& r) {
     return md;
 }
 
+// "a, b, c (median m)": a measure over the rounds.
+std::string roundList(const std::vector<double>& values, int digits) {
+    std::string out;
+    for (double v : values) out += (out.empty() ? "" : ", ") + fixed(v, digits);
+    return out + " (" + fixed(median(values), digits) + ")";
+}
+
+// bench.md's per-round tables (--rounds): each measure as every round gave it and their median, the
+// ratios taken within each round (what an interleaved comparison on a noisy machine should quote).
+std::string roundsSection(const BenchResults& r) {
+    std::string md;
+    const size_t n = techniqueRounds(r);
+    if (n >= 2) {
+        std::vector<BenchResults> rounds;
+        for (size_t i = 0; i < n; ++i) rounds.push_back(resultsInRound(r, i));
+        md += "### Per round (" + std::to_string(n) + " rounds, each measuring every technique in turn; median in brackets; × ssr-hiz: "
+              "issue 15's planar part against Hi-Z SSR)\n\n"
+              "| technique | GPU ms | × PPR | × floor | × ssr-hiz |\n|---|---|---|---|---|\n";
+        auto line = [&](const std::string& label, const std::function<std::optional<double>(const BenchResults&)>& ms) {
+            const auto values = perRound(rounds, ms);
+            if (!values) return;
+            auto ratios = [&](const std::string& reference) {
+                const auto list = perRound(rounds, [&](const BenchResults& round) -> std::optional<double> {
+                    const auto v = ms(round);
+                    return v ? benchRatio(round, *v, reference) : std::nullopt;
+                });
+                return list ? roundList(*list, 2) : std::string("–");
+            };
+            md += "| " + label + " | " + roundList(*values, 2) + " | " + ratios("ppr") + " | " + ratios("floor") + " | " + ratios("ssr-hiz") + " |\n";
+        };
+        for (const BenchTechnique& t : r.techniques) {
+            const std::string name = t.name;
+            auto technique = [name](const BenchResults& round) { return findTechnique(round, name); };
+            line(name, [technique](const BenchResults& round) { return std::optional<double>(technique(round)->techniqueMs); });
+            line("↳ " + name + " planar part", [technique](const BenchResults& round) -> std::optional<double> {
+                const auto parts = pprCostParts(*technique(round));
+                return parts ? std::optional<double>(parts->planar) : std::nullopt;
+            });
+            line("↳ " + name + " TAA (not in its GPU ms)", [technique](const BenchResults& round) { return taaMs(*technique(round)); });
+        }
+        md += "\n";
+    }
+    const BenchReflectorRow* first = r.reflectors.empty() ? nullptr : findRow(r, reflectorCounts(r).front(), true);
+    if (first && first->roundProjectMs.size() >= 2) {
+        md += "### Reflector count per round (`ppr.project` + `ppr.reach`, tiles=1; median in brackets)\n\n"
+              "| reflectors | ms | / (N=1) |\n|---:|---|---|\n";
+        auto projection = [](const BenchReflectorRow& row) {
+            std::vector<double> out;
+            for (size_t i = 0; i < row.roundProjectMs.size() && i < row.roundReachMs.size(); ++i)
+                out.push_back(row.roundProjectMs[i] + row.roundReachMs[i]);
+            return out;
+        };
+        const std::vector<double> base = projection(*first);
+        for (uint32_t count : reflectorCounts(r)) {
+            const BenchReflectorRow* on = findRow(r, count, true);
+            if (!on) continue;
+            const std::vector<double> ms = projection(*on);
+            std::vector<double> ratios;
+            for (size_t i = 0; i < ms.size() && i < base.size(); ++i)
+                if (base[i] > 0.0) ratios.push_back(ms[i] / base[i]);
+            md += "| " + std::to_string(count) + " | " + roundList(ms, 2) + " | " + (ratios.empty() ? "–" : roundList(ratios, 2)) + " |\n";
+        }
+        md += "\n";
+    }
+    if (!r.coverage.empty() && r.coverage.front().roundReflectMs.size() >= 2) {
+        md += "### Reflective screen fraction per round (`ppr.reflect` ms; median in brackets)\n\n"
+              "| camera | indirect=1 (+ clear) | indirect=0 | indirect / whole screen |\n|---|---|---|---|\n";
+        for (const std::string& cam : coverageCameras(r)) {
+            const BenchCoverageRow* on = findRow(r, cam, true);
+            const BenchCoverageRow* off = findRow(r, cam, false);
+            std::vector<double> onMs, ratios;
+            for (size_t i = 0; on && i < on->roundReflectMs.size() && i < on->roundClearMs.size(); ++i) {
+                onMs.push_back(on->roundReflectMs[i] + on->roundClearMs[i]);
+                if (off && i < off->roundReflectMs.size() && off->roundReflectMs[i] > 0.0) ratios.push_back(onMs.back() / off->roundReflectMs[i]);
+            }
+            md += "| " + cam + " | " + (onMs.empty() ? "–" : roundList(onMs, 2)) + " | " +
+                  (off && !off->roundReflectMs.empty() ? roundList(off->roundReflectMs, 2) : "–") + " | " +
+                  (ratios.empty() ? "–" : roundList(ratios, 2)) + " |\n";
+        }
+        md += "\n";
+    }
+    return md;
+}
+
 }  // namespace
 
 std::optional<double> hizBuildMs(const BenchTechnique& t) {
@@ -223,17 +343,46 @@ std::optional<double> benchRatio(const BenchResults& r, double ms, const std::st
     return ms / ref->techniqueMs;
 }
 
+std::map<std::string, double> medianPerPass(const std::vector<std::map<std::string, double>>& rounds) {
+    std::map<std::string, std::vector<double>> values;
+    for (const auto& round : rounds)
+        for (const auto& [pass, ms] : round) values[pass].push_back(ms);
+    std::map<std::string, double> out;
+    for (auto& [pass, list] : values) out[pass] = median(std::move(list));
+    return out;
+}
+
+BenchTechnique techniqueInRound(const BenchTechnique& t, size_t round) {
+    BenchTechnique r = t;
+    r.passMs = t.roundPassMs.at(round);
+    r.techniqueMs = sumPasses(r.passMs, [&](const std::string& pass) { return t.costPasses.count(pass) > 0; });
+    r.roundPassMs.clear();
+    return r;
+}
+
+size_t techniqueRounds(const BenchResults& r) {
+    if (r.techniques.empty()) return 0;
+    size_t n = r.techniques.front().roundPassMs.size();
+    for (const BenchTechnique& t : r.techniques) n = std::min(n, t.roundPassMs.size());
+    return n;
+}
+
 nlohmann::json benchJson(const BenchResults& r) {
     nlohmann::json j = r.header;
     if (!r.techniques.empty()) {
+        std::vector<BenchResults> rounds;
+        for (size_t i = 0; i < techniqueRounds(r); ++i) rounds.push_back(resultsInRound(r, i));
         nlohmann::json t = nlohmann::json::object();
-        for (const BenchTechnique& row : r.techniques) t[row.name] = techniqueJson(r, row);
+        for (const BenchTechnique& row : r.techniques) {
+            t[row.name] = techniqueJson(r, row);
+            if (!rounds.empty()) addRounds(t[row.name], rounds, row.name);
+        }
         j["techniques"] = {{"camera", r.techniquesCamera}, {"results", t}, {"slides", slidesJson()}};
         if (!r.skippedTechniques.empty()) j["techniques"]["skipped"] = r.skippedTechniques;
     }
     if (!r.reflectors.empty()) {
         nlohmann::json rows = nlohmann::json::array();
-        for (const BenchReflectorRow& row : r.reflectors)
+        for (const BenchReflectorRow& row : r.reflectors) {
             rows.push_back({{"reflectors", row.reflectors},
                             {"tiles", row.tiles ? 1 : 0},
                             {"project_ms", row.projectMs},
@@ -242,17 +391,27 @@ nlohmann::json benchJson(const BenchResults& r) {
                             {"technique_ms", row.techniqueMs},
                             {"reflector_tile_pairs", row.pairs},
                             {"reflector_tile_pairs_unculled", row.pairsUnculled}});
+            if (!row.roundProjectMs.empty()) {
+                rows.back()["project_ms_rounds"] = row.roundProjectMs;
+                rows.back()["reach_ms_rounds"] = row.roundReachMs;
+            }
+        }
         j["sweeps"]["reflectors"] = {{"scene", r.reflectorsScene}, {"camera", r.reflectorsCamera}, {"rows", rows}};
     }
     if (!r.coverage.empty()) {
         nlohmann::json rows = nlohmann::json::array();
-        for (const BenchCoverageRow& row : r.coverage)
+        for (const BenchCoverageRow& row : r.coverage) {
             rows.push_back({{"camera", row.camera},
                             {"reflective_tiles", row.reflectiveTiles},
                             {"indirect", row.indirect ? 1 : 0},
                             {"reflect_ms", row.reflectMs},
                             {"reflection_clear_ms", row.clearMs},
                             {"classify_ms", row.classifyMs}});
+            if (!row.roundReflectMs.empty()) {
+                rows.back()["reflect_ms_rounds"] = row.roundReflectMs;
+                rows.back()["reflection_clear_ms_rounds"] = row.roundClearMs;
+            }
+        }
         j["sweeps"]["coverage"] = {{"scene", r.coverageScene}, {"rows", rows}};
     }
     return j;
@@ -263,7 +422,8 @@ std::string benchMarkdown(const BenchResults& r, const std::string& commandLine)
     std::string md = "# ppr bench\n\n`" + commandLine + "`\n\n";
     md += "Device: " + h.value("device", std::string()) + " (" + h.value("driver", std::string()) + "), " +
           std::to_string(h["size"][0].get<uint32_t>()) + "x" + std::to_string(h["size"][1].get<uint32_t>()) + ", median of " +
-          std::to_string(h.value("frames", 0u)) + " frames after " + std::to_string(h.value("warmup", 0u)) + " warm-up frames.\n\n";
+          std::to_string(h.value("frames", 0u)) + " frames after " + std::to_string(h.value("warmup", 0u)) + " warm-up frames" +
+          (h.value("rounds", 1u) > 1 ? ", then the median of " + std::to_string(h.value("rounds", 1u)) + " rounds (see Rounds)" : "") + ".\n\n";
     if (!r.techniques.empty()) {
         md += "## Techniques (camera " + r.techniquesCamera + ")\n\n";
         md += "GPU ms: the technique's own passes (bold below; tile classification `tiles.*` for ppr and ssr-*, the depth "
@@ -312,6 +472,8 @@ std::string benchMarkdown(const BenchResults& r, const std::string& commandLine)
         }
         md += "\n";
     }
+    const std::string rounds = roundsSection(r);
+    if (!rounds.empty()) md += "## Rounds\n\n" + rounds;
     return md;
 }
 

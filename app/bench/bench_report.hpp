@@ -21,6 +21,8 @@ struct BenchTechnique {
     std::map<std::string, double> passMs;
     std::vector<std::string> passOrder;  // execution order; empty = passMs' (alphabetical) order
     std::optional<double> psnrDb, psnrReflectionDb, coverage;  // against planar (absent for planar itself)
+    // --rounds: each round's per-pass medians, in round order (passMs holds their medians per pass).
+    std::vector<std::map<std::string, double>> roundPassMs;
 };
 
 struct BenchReflectorRow {  // reflectors sweep
@@ -29,6 +31,7 @@ struct BenchReflectorRow {  // reflectors sweep
     double projectMs = 0.0, boundsMs = 0.0, reachMs = 0.0, techniqueMs = 0.0;  // reach: 0 unless tiles=1 indirect=1
     double projectionMs() const { return projectMs + reachMs; }                 // the projection with the pass that picks its tiles
     uint64_t pairs = 0, pairsUnculled = 0;
+    std::vector<double> roundProjectMs, roundReachMs;  // --rounds: each round's (the fields above: their medians)
 };
 
 struct BenchCoverageRow {  // coverage sweep
@@ -36,6 +39,7 @@ struct BenchCoverageRow {  // coverage sweep
     double reflectiveTiles = 0.0;  // fraction of screen tiles holding reflector pixels
     bool indirect = true;
     double reflectMs = 0.0, clearMs = 0.0, classifyMs = 0.0;
+    std::vector<double> roundReflectMs, roundClearMs;  // --rounds: each round's (the fields above: their medians)
 };
 
 struct BenchResults {
@@ -48,6 +52,14 @@ struct BenchResults {
     std::string coverageScene;
     std::vector<BenchCoverageRow> coverage;
 };
+
+// The median per pass over rounds (a pass missing from a round counts in the rounds that have it):
+// bench's --rounds, whose rounds each give per-pass medians over their frames.
+std::map<std::string, double> medianPerPass(const std::vector<std::map<std::string, double>>& rounds);
+// The technique as round i measured it (its passMs that round's), for the per-round ratios.
+BenchTechnique techniqueInRound(const BenchTechnique& technique, size_t round);
+// The rounds every technique row has (0 without rounds).
+size_t techniqueRounds(const BenchResults& results);
 
 // The depth hierarchy build alone (hiz.* passes); absent when the technique built none.
 std::optional<double> hizBuildMs(const BenchTechnique& technique);

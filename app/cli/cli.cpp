@@ -119,6 +119,8 @@ std::string usage() {
            "  --frames N           frames to render (capture default 5: median GPU times over them; bench default 10)\n"
            "  --warmup N           bench: frames rendered before measuring (default 3)\n"
            "  --sweep S            bench, repeatable: techniques | reflectors | coverage (default: all three)\n"
+           "  --rounds N           bench: measure every row N times in turn (default 1); bench.json gives the medians and\n"
+           "                       each round's values, bench.md the ratios within each round (for a noisy machine)\n"
            "  --out DIR            output directory (default out)\n"
            "  --validation         Khronos validation + synchronization validation; any error exits 1\n"
            "                       (also enabled by PPR_VALIDATION=1)\n"
@@ -164,6 +166,7 @@ static Options parseArguments(int argc, const char* const* argv) {
         else if (a == "--dump-graph") o.dumpGraph = true;
         else if (a == "--frames") o.frames = parseUnsigned(a, value(a), 1, kMaxFrames);
         else if (a == "--warmup") o.warmup = parseUnsigned(a, value(a), 0, kMaxFrames);
+        else if (a == "--rounds") o.rounds = parseUnsigned(a, value(a), 1, kMaxRounds);
         else if (a == "--sweep") {
             const std::string sweep = value(a);
             const auto& names = benchSweepNames();
@@ -204,6 +207,7 @@ static Options parseArguments(int argc, const char* const* argv) {
     if (o.mode == Mode::Fit && o.outGiven && o.out.empty()) throw std::runtime_error("--out: expected a file name");
     if (!o.path.empty() && o.mode != Mode::Capture && o.mode != Mode::Compare)
         throw std::runtime_error("--path " + o.path + ": only capture and compare render camera paths");
+    if (o.mode != Mode::Bench && o.rounds != 1) throw std::runtime_error("--rounds " + std::to_string(o.rounds) + ": only bench measures in rounds");
     if (o.mode == Mode::Bench && o.sweeps.empty()) o.sweeps = benchSweepNames();
     if (o.mode == Mode::Compare && o.techniques.empty()) o.techniques = {"ppr"};
     auto listsPpr = [&] {

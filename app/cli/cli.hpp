@@ -33,6 +33,9 @@ struct Options {
     // of the medians first.
     std::vector<std::string> sweeps;
     uint32_t warmup = 3;
+    // bench: how many times each sweep is measured, every row once per round in turn; bench.json gives
+    // the medians over the rounds and each round's values, bench.md the ratios within each round.
+    uint32_t rounds = 1;
     // fit: which materials' flat regions become reflectors (app/fit/fit.hpp).
     std::optional<std::string> fitMaterials;  // --materials REGEX
     std::optional<float> fitMaxRoughness;     // --max-roughness R
@@ -54,6 +57,7 @@ const std::vector<std::string>& benchSweepNames();
 constexpr uint32_t kMinSize = 1;  // a 1-pixel-wide frame is valid (the validation sweep renders 1x4096)
 constexpr uint32_t kMaxSize = 8192;
 constexpr uint32_t kMaxFrames = 100000;
+constexpr uint32_t kMaxRounds = 100;
 constexpr uint32_t kDefaultPathFrames = 32;  // frames of a named --path without --frames
 
 // Throws std::runtime_error with one line naming the option and the problem.

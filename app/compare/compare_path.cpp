@@ -10,6 +10,7 @@
 #include "capture/report.hpp"
 #include "metrics/compare_metrics.hpp"
 #include "metrics/contact_sheet.hpp"
+#include "metrics/median.hpp"
 #include "metrics/temporal_metrics.hpp"
 #include "render/headless_session.hpp"
 #include "scene/camera_path.hpp"

@@ -1,6 +1,7 @@
 #include "render/headless.hpp"
 
 #include "cli/cli.hpp"
+#include "metrics/median.hpp"
 #include "render/memory_log.hpp"
 #include "scene/glass_atlas.hpp"
 #include "techniques/technique_table.hpp"
@@ -25,13 +26,6 @@ void createReadback(const vk::Context& ctx, VkDeviceSize bytes, const char* name
     import.finalAccess = graph::Access::HostRead;
 }
 }  // namespace
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 void HeadlessRenderer::setTechnique(const std::string& technique) { technique_ = techniqueDesc(technique).name; }
 

@@ -113,6 +113,4 @@ private:
     void ensureGlassReadback(uint32_t atlasSize);
 };
 
-double median(std::vector<double> values);
-
 }  // namespace ppr::app

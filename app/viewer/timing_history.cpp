@@ -1,6 +1,6 @@
 #include "viewer/timing_history.hpp"
 
-#include "render/headless.hpp"  // median()
+#include "metrics/median.hpp"
 
 #include <algorithm>
 

@@ -344,5 +344,31 @@ TEST(PprBenchCli, WritesTablesAndPlot) {
     EXPECT_EQ(bench["validation_errors"], 0);
 }
 
+// --rounds: every row measured once per round in turn; bench.json keeps each round's values and their
+// medians (with two rounds, the mean: a technique's GPU ms is then the mean of its rounds').
+TEST(PprBenchCli, RoundsKeepEachRoundsValues) {
+    const auto dir = tempDir("bench-rounds");
+    const RunResult r = runPpr("bench --size 96x54 --frames 1 --warmup 0 --rounds 2 --sweep techniques --sweep reflectors "
+                               "--technique ppr --technique floor --validation --out " + dir.string());
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    // planar (the reference), ppr and floor, then 12 reflector configurations, each twice.
+    EXPECT_NE(r.output.find("ppr bench [30/30]"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("(round 2/2)"), std::string::npos) << r.output;
+    const nlohmann::json bench = nlohmann::json::parse(std::ifstream(dir / "bench.json"));
+    EXPECT_EQ(bench["rounds"], 2);
+    EXPECT_NE(bench["command"].get<std::string>().find("--rounds 2"), std::string::npos);
+    const nlohmann::json& ppr = bench["techniques"]["results"]["ppr"];
+    ASSERT_EQ(ppr["gpu_ms_rounds"].size(), 2u) << ppr.dump();
+    EXPECT_NEAR(ppr["gpu_ms"].get<double>(), 0.5 * (ppr["gpu_ms_rounds"][0].get<double>() + ppr["gpu_ms_rounds"][1].get<double>()), 1e-9);
+    EXPECT_EQ(ppr["ratio_to_floor_rounds"].size(), 2u);
+    EXPECT_EQ(ppr["planar_gpu_ms_rounds"].size(), 2u);
+    EXPECT_TRUE(ppr["psnr_db"].is_number());  // scored on the last round's images
+    for (const nlohmann::json& row : bench["sweeps"]["reflectors"]["rows"]) EXPECT_EQ(row["project_ms_rounds"].size(), 2u) << row.dump();
+    std::ifstream md(dir / "bench.md");
+    const std::string text((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("## Rounds"), std::string::npos);
+    EXPECT_EQ(bench["validation_errors"], 0);
+}
+
 }  // namespace
 }  // namespace ppr::test

@@ -42,6 +42,15 @@ TEST(CliLimits, AbsurdSizesAndFrameCountsAreRefused) {
     EXPECT_EQ(errorOf({"ppr", "capture", "--frames", "1000000000000"}), "--frames 1000000000000: out of range (1..100000)");
 }
 
+TEST(CliLimits, BenchRounds) {
+    EXPECT_EQ(parse({"ppr", "bench"}).rounds, 1u);
+    EXPECT_EQ(parse({"ppr", "bench", "--rounds", "3"}).rounds, 3u);
+    EXPECT_EQ(errorOf({"ppr", "bench", "--rounds", "0"}), "--rounds 0: out of range (1..100)");
+    EXPECT_EQ(errorOf({"ppr", "bench", "--rounds", "101"}), "--rounds 101: out of range (1..100)");
+    EXPECT_EQ(errorOf({"ppr", "bench", "--rounds", "two"}), "--rounds two: expected a whole number");
+    EXPECT_EQ(errorOf({"ppr", "capture", "--rounds", "2"}), "--rounds 2: only bench measures in rounds");
+}
+
 TEST(CliLimits, FitOptions) {
     const ppr::app::Options o =
         parse({"ppr", "fit", "--scene", "s.gltf", "--materials", "floor|glass", "--max-roughness", "0.3", "--min-area", "2", "--out", "r.json"});

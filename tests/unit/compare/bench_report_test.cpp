@@ -232,3 +232,53 @@ TEST(BenchReport, TaaPassesAreReportedApartFromTheTechnique) {
     EXPECT_FALSE(j["ppr"].contains("taa_gpu_ms"));
     EXPECT_NE(benchMarkdown(r, "ppr bench").find("TAA in ppr@taa=1"), std::string::npos);
 }
+
+TEST(BenchReport, MedianPerPassOverTheRoundsThatRanIt) {
+    const std::map<std::string, double> m = medianPerPass({{{"a", 1.0}, {"b", 5.0}}, {{"a", 3.0}}, {{"a", 2.0}, {"b", 7.0}}});
+    EXPECT_DOUBLE_EQ(m.at("a"), 2.0);
+    EXPECT_DOUBLE_EQ(m.at("b"), 6.0);  // two rounds ran it: their mean
+    EXPECT_TRUE(medianPerPass({}).empty());
+}
+
+// --rounds: each round's values, and ratios taken within each round, which the ratio of the medians
+// over the rounds is not (here PPR doubles in round 2 while the floor does not).
+TEST(BenchReport, RoundsGiveEachRoundsValuesAndTheRatiosWithinThem) {
+    BenchResults plain = results();
+    BenchResults r = plain;
+    for (BenchTechnique& t : r.techniques) {
+        std::map<std::string, double> second = t.passMs;
+        if (t.name == "ppr")
+            for (auto& [pass, ms] : second) ms *= 2.0;
+        t.roundPassMs = {t.passMs, second};
+    }
+    ASSERT_EQ(techniqueRounds(r), 2u);
+    EXPECT_DOUBLE_EQ(techniqueInRound(find(r, "ppr"), 1).techniqueMs, 2.0);
+    const nlohmann::json j = benchJson(r)["techniques"]["results"];
+    EXPECT_EQ(j["ppr"]["gpu_ms_rounds"], nlohmann::json({1.0, 2.0}));
+    EXPECT_EQ(j["ppr"]["ratio_to_floor_rounds"], nlohmann::json({2.0, 4.0}));
+    EXPECT_EQ(j["floor"]["ratio_to_ppr_rounds"], nlohmann::json({0.5, 0.25}));
+    EXPECT_NEAR(j["ppr"]["planar_gpu_ms_rounds"][1].get<double>(), 1.6, 1e-12);  // project, reflect, tiles
+    EXPECT_FALSE(j["floor"].contains("planar_gpu_ms_rounds"));
+    EXPECT_FALSE(j["ppr"].contains("taa_gpu_ms_rounds"));
+
+    BenchReflectorRow one, many;
+    one.reflectors = 1;
+    many.reflectors = 1024;
+    one.roundProjectMs = {1.0, 2.0};
+    many.roundProjectMs = {3.0, 5.0};
+    one.roundReachMs = many.roundReachMs = {1.0, 1.0};
+    r.reflectors = {one, many};
+    EXPECT_EQ(benchJson(r)["sweeps"]["reflectors"]["rows"][1]["project_ms_rounds"], nlohmann::json({3.0, 5.0}));
+
+    const std::string md = benchMarkdown(r, "ppr bench --rounds 2");
+    EXPECT_NE(md.find("## Rounds"), std::string::npos) << md;
+    // ssr-hiz costs 2.35 ms in both rounds.
+    EXPECT_NE(md.find("| ppr | 1.00, 2.00 (1.50) | 1.00, 1.00 (1.00) | 2.00, 4.00 (3.00) | 0.43, 0.85 (0.64) |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| ↳ ppr planar part | 0.80, 1.60 (1.20) |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| floor | 0.50, 0.50 (0.50) | 0.50, 0.25 (0.38) | 1.00, 1.00 (1.00) | 0.21, 0.21 (0.21) |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| 1024 | 4.00, 6.00 (5.00) | 2.00, 2.00 (2.00) |"), std::string::npos) << md;
+
+    // One round (the default): none of it.
+    EXPECT_EQ(benchMarkdown(plain, "ppr bench").find("## Rounds"), std::string::npos);
+    EXPECT_FALSE(benchJson(plain)["techniques"]["results"]["ppr"].contains("gpu_ms_rounds"));
+}
