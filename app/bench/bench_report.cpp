@@ -136,6 +136,21 @@ void addRounds(nlohmann::json& e, const std::vector<BenchResults>& rounds, const
         return parts ? std::optional<double>(parts->planar) : std::nullopt;
     });
     add("taa_gpu_ms", [](const BenchResults&, const BenchTechnique& t) { return taaMs(t); });
+    // Every pass, round by round (a pass some round did not run: 0 there).
+    std::set<std::string> names;
+    for (const BenchResults& round : rounds)
+        for (const auto& [pass, ms] : findTechnique(round, technique)->passMs) names.insert(pass);
+    nlohmann::json passes = nlohmann::json::object();
+    for (const std::string& pass : names) {
+        std::vector<double> list;
+        for (const BenchResults& round : rounds) {
+            const auto& roundMs = findTechnique(round, technique)->passMs;
+            const auto it = roundMs.find(pass);
+            list.push_back(it == roundMs.end() ? 0.0 : it->second);
+        }
+        passes[pass] = list;
+    }
+    e["passes_rounds"] = passes;
 }
 
 std::string techniquesTable(const BenchResults& r) {

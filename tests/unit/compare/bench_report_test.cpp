@@ -260,6 +260,7 @@ TEST(BenchReport, RoundsGiveEachRoundsValuesAndTheRatiosWithinThem) {
     EXPECT_NEAR(j["ppr"]["planar_gpu_ms_rounds"][1].get<double>(), 1.6, 1e-12);  // project, reflect, tiles
     EXPECT_FALSE(j["floor"].contains("planar_gpu_ms_rounds"));
     EXPECT_FALSE(j["ppr"].contains("taa_gpu_ms_rounds"));
+    EXPECT_EQ(j["ppr"]["passes_rounds"]["ppr.project"], nlohmann::json({0.5, 1.0}));
 
     BenchReflectorRow one, many;
     one.reflectors = 1;
