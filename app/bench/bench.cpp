@@ -43,6 +43,8 @@ public:
     void done() {
         if (tty_) std::fprintf(stderr, "\r\033[K");
     }
+    // Steps counted at the start that will not run (a skipped technique's later rounds).
+    void drop(uint32_t steps) { steps_ -= std::min(steps, steps_); }
 
 private:
     uint32_t steps_, step_ = 0;
@@ -166,6 +168,7 @@ private:
             }
             if (!o_.techniques.empty()) throw std::runtime_error("--technique " + t + ": " + why);
             progress_->step("technique " + t + ": skipped");
+            progress_->drop(o_.rounds - 1);  // said once, not once per round
             std::fprintf(stderr, "ppr: bench: skipping %s: %s\n", t.c_str(), why.c_str());
             results_.skippedTechniques[t] = why;
         }

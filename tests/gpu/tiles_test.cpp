@@ -18,9 +18,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdlib>
 #include <cstring>
-#include <span>
 #include <fstream>
+#include <optional>
+#include <span>
 
 namespace ppr::test {
 namespace {
@@ -368,6 +370,27 @@ TEST(PprBenchCli, RoundsKeepEachRoundsValues) {
     const std::string text((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
     EXPECT_NE(text.find("## Rounds"), std::string::npos);
     EXPECT_EQ(bench["validation_errors"], 0);
+}
+
+// A technique the device cannot run is said once, not once per round: the progress count still ends
+// at its total (simulated: PPR_HIDE_RAY_QUERY=1 hides ray queries, so raytraced is skipped).
+TEST(PprBenchCli, RoundsSayASkippedTechniqueOnce) {
+    const auto dir = tempDir("bench-rounds-skip");
+    rayQueryMissing();  // asked before the variable hides them
+    const char* hidden = std::getenv("PPR_HIDE_RAY_QUERY");
+    const std::optional<std::string> before = hidden ? std::optional<std::string>(hidden) : std::nullopt;
+    ASSERT_EQ(setenv("PPR_HIDE_RAY_QUERY", "1", 1), 0);
+    const RunResult r = runPpr("bench --size 96x54 --frames 1 --warmup 0 --rounds 2 --sweep techniques --out " + dir.string());
+    if (before) setenv("PPR_HIDE_RAY_QUERY", before->c_str(), 1);  // as the test found it
+    else unsetenv("PPR_HIDE_RAY_QUERY");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    const size_t techniques = app::techniqueTable().size() - 1;  // every technique but none, planar among them
+    const std::string last = std::to_string(2 * techniques - 1);
+    EXPECT_NE(r.output.find("ppr bench [" + last + "/" + last + "]"), std::string::npos) << r.output;
+    const nlohmann::json bench = nlohmann::json::parse(std::ifstream(dir / "bench.json"));
+    EXPECT_TRUE(bench["techniques"]["skipped"].contains("raytraced")) << bench.dump();
+    EXPECT_EQ(bench["techniques"]["results"].size(), techniques - 1);
+    EXPECT_EQ(bench["techniques"]["results"]["ssr-hiz"]["gpu_ms_rounds"].size(), 2u);
 }
 
 }  // namespace
