@@ -8,8 +8,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace ppr::test {
@@ -91,6 +93,26 @@ inline RunResult runPpr(const std::string& args) {
     r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return r;
 }
+
+// Sets an environment variable for the scope, so that the ppr processes a test starts see it (e.g.
+// PPR_HIDE_RAY_QUERY=1, a device without ray queries), then puts back what was there.
+class ScopedEnv {
+public:
+    ScopedEnv(const char* name, const char* value) : name_(name) {
+        if (const char* v = std::getenv(name)) before_ = v;
+        setenv(name, value, 1);
+    }
+    ~ScopedEnv() {
+        if (before_) setenv(name_, before_->c_str(), 1);
+        else unsetenv(name_);
+    }
+    ScopedEnv(const ScopedEnv&) = delete;
+    ScopedEnv& operator=(const ScopedEnv&) = delete;
+
+private:
+    const char* name_;
+    std::optional<std::string> before_;
+};
 
 inline std::filesystem::path tempDir(const std::string& name) {
     auto dir = std::filesystem::temp_directory_path() / ("ppr-test-" + name + "-" + std::to_string(::getpid()));

@@ -8,8 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <optional>
 #include <sstream>
 
 namespace ppr::test {
@@ -150,15 +148,13 @@ TEST(RaytracedInvariants, RepeatableWithItsOwnPasses) {
 TEST(RaytracedCli, RefusedWithoutRayQueriesOthersStillRender) {
     const auto dir = tempDir("raytraced-cli");
     rayQueryMissing();  // asked before the variable hides them
-    const char* hidden = std::getenv("PPR_HIDE_RAY_QUERY");
-    const std::optional<std::string> before = hidden ? std::optional<std::string>(hidden) : std::nullopt;
-    ASSERT_EQ(setenv("PPR_HIDE_RAY_QUERY", "1", 1), 0);
-    const RunResult refused = runPpr("capture --validation --technique raytraced --camera mirror --size 96x54 --frames 1 --out " +
-                                     (dir / "rt").string());
-    const RunResult ppr = runPpr("capture --validation --technique ppr --camera mirror --size 96x54 --frames 1 --out " + (dir / "ppr").string());
-    const RunResult compare = runPpr("compare --technique raytraced --camera mirror --size 96x54 --frames 1 --out " + (dir / "cmp").string());
-    if (before) setenv("PPR_HIDE_RAY_QUERY", before->c_str(), 1);  // as the test found it
-    else unsetenv("PPR_HIDE_RAY_QUERY");
+    RunResult refused, ppr, compare;
+    {
+        const ScopedEnv hidden("PPR_HIDE_RAY_QUERY", "1");
+        refused = runPpr("capture --validation --technique raytraced --camera mirror --size 96x54 --frames 1 --out " + (dir / "rt").string());
+        ppr = runPpr("capture --validation --technique ppr --camera mirror --size 96x54 --frames 1 --out " + (dir / "ppr").string());
+        compare = runPpr("compare --technique raytraced --camera mirror --size 96x54 --frames 1 --out " + (dir / "cmp").string());
+    }
     EXPECT_NE(refused.exitCode, 0) << refused.output;
     std::istringstream lines(refused.output);
     std::vector<std::string> errors;

@@ -18,10 +18,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include <cstdlib>
 #include <cstring>
 #include <fstream>
-#include <optional>
 #include <span>
 
 namespace ppr::test {
@@ -377,12 +375,11 @@ TEST(PprBenchCli, RoundsKeepEachRoundsValues) {
 TEST(PprBenchCli, RoundsSayASkippedTechniqueOnce) {
     const auto dir = tempDir("bench-rounds-skip");
     rayQueryMissing();  // asked before the variable hides them
-    const char* hidden = std::getenv("PPR_HIDE_RAY_QUERY");
-    const std::optional<std::string> before = hidden ? std::optional<std::string>(hidden) : std::nullopt;
-    ASSERT_EQ(setenv("PPR_HIDE_RAY_QUERY", "1", 1), 0);
-    const RunResult r = runPpr("bench --size 96x54 --frames 1 --warmup 0 --rounds 2 --sweep techniques --out " + dir.string());
-    if (before) setenv("PPR_HIDE_RAY_QUERY", before->c_str(), 1);  // as the test found it
-    else unsetenv("PPR_HIDE_RAY_QUERY");
+    RunResult r;
+    {
+        const ScopedEnv hidden("PPR_HIDE_RAY_QUERY", "1");
+        r = runPpr("bench --size 96x54 --frames 1 --warmup 0 --rounds 2 --sweep techniques --out " + dir.string());
+    }
     EXPECT_EQ(r.exitCode, 0) << r.output;
     const size_t techniques = app::techniqueTable().size() - 1;  // every technique but none, planar among them
     const std::string last = std::to_string(2 * techniques - 1);
