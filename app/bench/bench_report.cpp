@@ -122,31 +122,30 @@ std::optional<std::vector<double>> perRound(const std::vector<BenchResults>& rou
     return out;
 }
 
+// PPR's planar part alone (pprCostParts); absent for a technique without a projection pass.
+std::optional<double> planarPartMs(const BenchTechnique& t) {
+    const auto parts = pprCostParts(t);
+    return parts ? std::optional<double>(parts->planar) : std::nullopt;
+}
+
 // The per-round lists of a technique's measures (bench.json "<key>_rounds"), for --rounds.
-void addRounds(nlohmann::json& e, const std::vector<BenchResults>& rounds, const std::string& technique) {
+void addRounds(nlohmann::json& e, const std::vector<BenchResults>& rounds, const BenchTechnique& technique) {
     auto add = [&](const std::string& key, const std::function<std::optional<double>(const BenchResults&, const BenchTechnique&)>& value) {
-        const auto list = perRound(rounds, [&](const BenchResults& round) { return value(round, *findTechnique(round, technique)); });
+        const auto list = perRound(rounds, [&](const BenchResults& round) { return value(round, *findTechnique(round, technique.name)); });
         if (list) e[key + "_rounds"] = *list;
     };
     add("gpu_ms", [](const BenchResults&, const BenchTechnique& t) { return std::optional<double>(t.techniqueMs); });
     add("ratio_to_ppr", [](const BenchResults& r, const BenchTechnique& t) { return benchRatio(r, t.techniqueMs, "ppr"); });
     add("ratio_to_floor", [](const BenchResults& r, const BenchTechnique& t) { return benchRatio(r, t.techniqueMs, "floor"); });
-    add("planar_gpu_ms", [](const BenchResults&, const BenchTechnique& t) {
-        const auto parts = pprCostParts(t);
-        return parts ? std::optional<double>(parts->planar) : std::nullopt;
-    });
+    add("planar_gpu_ms", [](const BenchResults&, const BenchTechnique& t) { return planarPartMs(t); });
     add("taa_gpu_ms", [](const BenchResults&, const BenchTechnique& t) { return taaMs(t); });
     // Every pass, round by round (a pass some round did not run: 0 there).
-    std::set<std::string> names;
-    for (const BenchResults& round : rounds)
-        for (const auto& [pass, ms] : findTechnique(round, technique)->passMs) names.insert(pass);
     nlohmann::json passes = nlohmann::json::object();
-    for (const std::string& pass : names) {
+    for (const auto& [pass, ms] : technique.passMs) {  // every pass of any round (medianPerPass)
         std::vector<double> list;
-        for (const BenchResults& round : rounds) {
-            const auto& roundMs = findTechnique(round, technique)->passMs;
-            const auto it = roundMs.find(pass);
-            list.push_back(it == roundMs.end() ? 0.0 : it->second);
+        for (const auto& round : technique.roundPassMs) {
+            const auto it = round.find(pass);
+            list.push_back(it == round.end() ? 0.0 : it->second);
         }
         passes[pass] = list;
     }
@@ -276,10 +275,7 @@ std::string roundsSection(const BenchResults& r) {
             const std::string name = t.name;
             auto technique = [name](const BenchResults& round) { return findTechnique(round, name); };
             line(name, [technique](const BenchResults& round) { return std::optional<double>(technique(round)->techniqueMs); });
-            line("↳ " + name + " planar part", [technique](const BenchResults& round) -> std::optional<double> {
-                const auto parts = pprCostParts(*technique(round));
-                return parts ? std::optional<double>(parts->planar) : std::nullopt;
-            });
+            line("↳ " + name + " planar part", [technique](const BenchResults& round) { return planarPartMs(*technique(round)); });
             line("↳ " + name + " TAA (not in its GPU ms)", [technique](const BenchResults& round) { return taaMs(*technique(round)); });
         }
         md += "\n";
@@ -390,7 +386,7 @@ nlohmann::json benchJson(const BenchResults& r) {
         nlohmann::json t = nlohmann::json::object();
         for (const BenchTechnique& row : r.techniques) {
             t[row.name] = techniqueJson(r, row);
-            if (!rounds.empty()) addRounds(t[row.name], rounds, row.name);
+            if (!rounds.empty()) addRounds(t[row.name], rounds, row);
         }
         j["techniques"] = {{"camera", r.techniquesCamera}, {"results", t}, {"slides", slidesJson()}};
         if (!r.skippedTechniques.empty()) j["techniques"]["skipped"] = r.skippedTechniques;
