@@ -67,3 +67,30 @@ find_window() {
     eval "$(xdotool getwindowgeometry --shell "$WID")"
     WX=$X WY=$Y WW=$WIDTH WH=$HEIGHT
 }
+
+# The scene region right of the ImGui panel (the panel's numbers change every frame; a still scene
+# does not): SX SY SW SH, from the window's geometry.
+scene_region() { SX=$((WX + 400)) SY=$WY SW=$((WW - 400)) SH=$WH; }
+# shot NAME → $WORK/NAME.png (whole window) and $WORK/NAME-scene.png (scene_region).
+shot() {
+    xwd -root -silent | convert xwd:- -crop "${WW}x${WH}+${WX}+${WY}" +repage "png:$WORK/$1.png" || fail "screenshot failed"
+    convert "$WORK/$1.png" -crop "${SW}x${SH}+$((SX - WX))+$((SY - WY))" +repage "png:$WORK/$1-scene.png"
+}
+# Pixels that differ between two images by more than a 2 % fuzz.
+differing() { compare -metric AE -fuzz 2% "$1" "$2" null: 2>&1 | awk '{print int($1)}'; }
+
+# close_viewer: SIGTERM closes the window like the close button; exit code 0 = no validation errors,
+# and none in the log.
+close_viewer() {
+    kill -TERM "$VIEWER_PID"
+    local rc="" pid=$VIEWER_PID
+    for _ in $(seq 1 $((STEP_TIMEOUT * 2))); do
+        if ! alive; then wait "$VIEWER_PID"; rc=$?; break; fi
+        sleep 0.5
+    done
+    VIEWER_PID=""
+    [ -n "$rc" ] || { kill -9 "$pid" 2>/dev/null; fail "viewer did not exit within ${STEP_TIMEOUT}s of SIGTERM"; }
+    [ "$rc" -eq 0 ] || fail "viewer exit code $rc (1 = validation errors)"
+    grep -q '^validation error' "$WORK/viewer.log" && fail "validation errors in the log"
+    return 0
+}

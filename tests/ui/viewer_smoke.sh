@@ -24,13 +24,7 @@ find_window
 note "window $WID at $WX,$WY size ${WW}x${WH}: $(xdotool getwindowname "$WID")"
 [ "$WW" -eq 640 ] && [ "$WH" -eq 360 ] || fail "window is ${WW}x${WH}, expected 640x360"
 
-# The scene region right of the ImGui panel (the panel's numbers change every frame; the scene of a
-# still camera does not).
-SX=$((WX + 400)) SY=$WY SW=$((WW - 400)) SH=$WH
-shot() {  # shot NAME → $WORK/NAME.png (whole window) and $WORK/NAME-scene.png
-    xwd -root -silent | convert xwd:- -crop "${WW}x${WH}+${WX}+${WY}" +repage "png:$WORK/$1.png" || fail "screenshot failed"
-    convert "$WORK/$1.png" -crop "${SW}x${SH}+$((SX - WX))+$((SY - WY))" +repage "png:$WORK/$1-scene.png"
-}
+scene_region
 stddev() { convert "$1" -format '%[fx:standard_deviation]' info:; }
 
 # 1. The window shows a picture (not a blank/black swapchain image).
@@ -46,8 +40,7 @@ done
 note "picture drawn (scene standard deviation $sd, whole window $(stddev "$WORK/first.png"))"
 
 # Frame-to-frame noise of a still camera (0 today; temporal techniques may add some): the F2 change
-# must stand well above it. Differences are counted with a 2% fuzz.
-differing() { compare -metric AE -fuzz 2% "$1" "$2" null: 2>&1 | awk '{print int($1)}'; }
+# must stand well above it. Differences are counted with a 2% fuzz (differing).
 sleep 1
 shot before
 sleep 1
@@ -119,17 +112,7 @@ done
 note "resized to 800x450, new area drawn (standard deviation $sd)"
 
 # 5. Clean exit: SIGTERM closes the window like the close button; exit code 0 = no validation errors.
-kill -TERM "$VIEWER_PID"
-rc=""
-for _ in $(seq 1 $((STEP_TIMEOUT * 2))); do
-    if ! alive; then wait "$VIEWER_PID"; rc=$?; break; fi
-    sleep 0.5
-done
-VIEWER_PID_DONE=$VIEWER_PID
-VIEWER_PID=""
-[ -n "$rc" ] || { kill -9 "$VIEWER_PID_DONE" 2>/dev/null; fail "viewer did not exit within ${STEP_TIMEOUT}s of SIGTERM"; }
-[ "$rc" -eq 0 ] || fail "viewer exit code $rc (1 = validation errors)"
-grep -q '^validation error' "$WORK/viewer.log" && fail "validation errors in the log"
+close_viewer
 warnings=$(grep -c '^validation warning' "$WORK/viewer.log")
 [ "$warnings" -eq 0 ] || note "note: $warnings validation warning(s) in $WORK/viewer.log"
 note "PASS (viewer exit code 0, no validation errors)"
