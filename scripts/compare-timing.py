@@ -10,10 +10,13 @@ single pair of runs is not. The sibling of check-identical.sh, which shows a cha
 pictures; this shows what it costs.
 
 usage: compare-timing.py OLD_PPR NEW_PPR [--rounds N] [--pass P[+Q...]] [--frames F]
-                         [--new-set key=value]... [-- capture options...]
+                         [--new-set key=value]... [--new-args "OPTIONS"] [-- capture options...]
   --pass      the passes summed (default: the technique's total, report.json's technique_gpu_ms);
               e.g. ppr.project+ppr.reach
   --new-set   a setting for the new side only (the same build twice: a mode on against off)
+  --new-args  capture options for the new side only, after the shared ones (the last of an option
+              wins): e.g. --new-args="--scene stress:1024" -- --scene stress:1 times 1 024
+              reflectors against one, round by round
   after --     passed to both sides' `ppr capture` (--scene, --camera, --size, --technique, --set ...);
               one camera: overview unless --camera names another
 Exit 0 when every run succeeded; the ratios are measurements, never a pass/fail verdict.
@@ -21,6 +24,7 @@ Exit 0 when every run succeeded; the ratios are measurements, never a pass/fail 
 import argparse
 import json
 import os
+import shlex
 import statistics
 import subprocess
 import sys
@@ -59,14 +63,17 @@ def main():
     ap.add_argument("--pass", dest="passes", default="", help="passes to sum, joined by +")
     ap.add_argument("--frames", type=int, default=12)
     ap.add_argument("--new-set", action="append", default=[])
+    ap.add_argument("--new-args", default="")
     args = ap.parse_args(argv)
     if args.rounds < 1 or args.frames < 1:
         sys.exit("compare-timing: --rounds and --frames must be at least 1")
     if "--camera" not in capture_args:
         capture_args += ["--camera", "overview"]  # one report.json, not one per named camera
     passes = [p for p in args.passes.split("+") if p]
-    new_args = capture_args + [a for kv in args.new_set for a in ("--set", kv)]
+    new_args = capture_args + [a for kv in args.new_set for a in ("--set", kv)] + shlex.split(args.new_args)
     label = args.passes or "technique_gpu_ms"
+    for name, exe, extra in (("old", args.old, capture_args), ("new", args.new, new_args)):
+        print("%s: %s" % (name, " ".join([exe, "capture", "--frames", str(args.frames)] + [shlex.quote(a) for a in extra])))
     old_ms, new_ms = [], []
     with tempfile.TemporaryDirectory() as work:
         for r in range(args.rounds):
