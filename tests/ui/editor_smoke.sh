@@ -8,12 +8,9 @@
 # usage: editor_smoke.sh PPR_BINARY WORK_DIR
 set -uo pipefail
 
-PPR=${1:?usage: editor_smoke.sh PPR_BINARY WORK_DIR}
-WORK=${2:?usage: editor_smoke.sh PPR_BINARY WORK_DIR}
-STEP_TIMEOUT=${PPR_UI_TIMEOUT:-90}
 TEST=ui.editor_snap_move_save
 # shellcheck source=ui_lib.sh
-source "$(dirname "$0")/ui_lib.sh"
+source "$(dirname "$0")/ui_lib.sh" "$@"
 
 SCENE_DIR=$(dirname "$PPR")/../content/default
 FILE="$WORK/edited.reflectors.json"

@@ -1,5 +1,9 @@
-# Shared by the UI tests: a private Xvfb display, the viewer's window, screenshots. Source it after
-# setting TEST (the test's name in messages), PPR, WORK and STEP_TIMEOUT.
+# Shared by the UI tests: a private Xvfb display, the viewer's window, screenshots. A test sets TEST
+# (its name in messages) and sources this with its own arguments, PPR_BINARY WORK_DIR, which become
+# PPR and WORK; STEP_TIMEOUT is PPR_UI_TIMEOUT (seconds to wait for each step, default 90).
+PPR=${1:?usage: $(basename "$0") PPR_BINARY WORK_DIR}
+WORK=${2:?usage: $(basename "$0") PPR_BINARY WORK_DIR}
+STEP_TIMEOUT=${PPR_UI_TIMEOUT:-90}
 
 fail() { echo "$TEST: FAIL: $*" >&2; [ -f "$WORK/viewer.log" ] && sed 's/^/  viewer: /' "$WORK/viewer.log" >&2; exit 1; }
 note() { echo "$TEST: $*"; }

@@ -8,14 +8,11 @@
 # SIGTERM once the checks are done), PPR_UI_TIMEOUT (seconds to wait for each step, default 90).
 set -uo pipefail
 
-PPR=${1:?usage: viewer_smoke.sh PPR_BINARY WORK_DIR}
-WORK=${2:?usage: viewer_smoke.sh PPR_BINARY WORK_DIR}
 FRAMES=${PPR_UI_FRAMES:-3000}
-STEP_TIMEOUT=${PPR_UI_TIMEOUT:-90}
 
 TEST=ui.viewer_opens
 # shellcheck source=ui_lib.sh
-source "$(dirname "$0")/ui_lib.sh"
+source "$(dirname "$0")/ui_lib.sh" "$@"
 
 PPR_VIEWER_FRAMES=$FRAMES "$PPR" view --size 640x360 --validation --out "$WORK/out" >"$WORK/viewer.log" 2>&1 &
 VIEWER_PID=$!

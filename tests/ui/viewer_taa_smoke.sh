@@ -12,13 +12,10 @@
 # usage: viewer_taa_smoke.sh PPR_BINARY WORK_DIR
 set -uo pipefail
 
-PPR=${1:?usage: viewer_taa_smoke.sh PPR_BINARY WORK_DIR}
-WORK=${2:?usage: viewer_taa_smoke.sh PPR_BINARY WORK_DIR}
-STEP_TIMEOUT=${PPR_UI_TIMEOUT:-90}
 
 TEST=ui.viewer_taa_motion
 # shellcheck source=ui_lib.sh
-source "$(dirname "$0")/ui_lib.sh"
+source "$(dirname "$0")/ui_lib.sh" "$@"
 
 PPR_VIEWER_FRAMES=5000 "$PPR" view --size 640x360 --validation --set taa=1 --out "$WORK/out" >"$WORK/viewer.log" 2>&1 &
 VIEWER_PID=$!
