@@ -43,7 +43,8 @@ hold() {
     return 1
 }
 # settled: three screenshots, 0.37 s and 0.61 s apart, differ in under 1 % of the scene's pixels. Uneven
-# gaps: a viewer drawing one 16-frame jitter cycle a second shows the same jittered frame a second later.
+# gaps: with screenshots a second apart, a build whose TAA ignored its history passed (0 pixels
+# differed; the viewer drew about one 16-frame jitter cycle a second).
 settled() {
     shot a; sleep 0.37; shot b; sleep 0.61; shot c
     n=$(( $(differing "$WORK/a-scene.png" "$WORK/b-scene.png") + $(differing "$WORK/b-scene.png" "$WORK/c-scene.png") ))
