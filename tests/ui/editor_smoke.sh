@@ -26,22 +26,13 @@ start_viewer() {
     xdotool windowfocus "$WID" 2>/dev/null
     sleep 3  # a few frames drawn
 }
-wait_for() {  # wait_for DESCRIPTION COMMAND...: polls until COMMAND succeeds
-    local what=$1; shift
-    for _ in $(seq 1 $((STEP_TIMEOUT * 2))); do
-        alive || fail "viewer exited while waiting for $what"
-        "$@" && return 0
-        sleep 0.5
-    done
-    fail "timed out waiting for $what"
-}
-shot() { xwd -root -silent | convert xwd:- -crop "${WW}x${WH}+${WX}+${WY}" +repage "png:$WORK/view.png"; }
+shot_window() { xwd -root -silent | convert xwd:- -crop "${WW}x${WH}+${WX}+${WY}" +repage "png:$WORK/view.png"; }
 selected() {  # the selection outline (yellow) is on screen
-    shot || return 1
+    shot_window || return 1
     [ "$(convert "$WORK/view.png" -fill black +opaque 'rgb(255,200,40)' -fill white -opaque 'rgb(255,200,40)' -format '%[fx:mean*w*h]' info:)" != 0 ]
 }
 handle_at() {  # handle_at X Y COLOUR: a handle of COLOUR lies within 6 px of window pixel (X, Y)
-    shot || return 1
+    shot_window || return 1
     [ "$(convert "$WORK/view.png" -crop "13x13+$(($1 - 6))+$(($2 - 6))" +repage -fill black +opaque "$3" -fill white -opaque "$3" -format '%[fx:mean*w*h]' info:)" != 0 ]
 }
 WHITE='rgb(255,255,255)' ORANGE='rgb(255,110,0)'  # a handle, the handle being dragged (editor_ui.cpp)

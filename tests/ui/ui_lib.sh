@@ -58,6 +58,20 @@ note "Xvfb on $DISPLAY"
 
 alive() { kill -0 "$VIEWER_PID" 2>/dev/null; }
 
+# wait_for DESCRIPTION COMMAND...: polls COMMAND every half second until it succeeds, for at most
+# STEP_TIMEOUT seconds (the checks' own time included), while the viewer lives. A check may leave its
+# last figure in `measured` for the failure message.
+measured=""
+wait_for() {
+    local what=$1 deadline=$((SECONDS + STEP_TIMEOUT)); shift
+    while [ "$SECONDS" -lt "$deadline" ]; do
+        alive || fail "viewer exited while waiting for $what"
+        "$@" && return 0
+        sleep 0.5
+    done
+    fail "timed out waiting for $what${measured:+ (last measured: $measured)}"
+}
+
 # find_window: waits for the viewer's window → WID, WX WY WW WH.
 find_window() {
     WID=""

@@ -48,20 +48,12 @@ hold() {
 settled() {
     shot a; sleep 0.37; shot b; sleep 0.61; shot c
     n=$(( $(differing "$WORK/a-scene.png" "$WORK/b-scene.png") + $(differing "$WORK/b-scene.png" "$WORK/c-scene.png") ))
+    measured="$n differing pixels"
     [ "$n" -lt $((PIXELS / 100)) ]
-}
-wait_until() {  # wait_until DESCRIPTION CHECK...
-    local what=$1; shift
-    for _ in $(seq 1 "$STEP_TIMEOUT"); do
-        alive || fail "viewer exited while waiting until $what"
-        "$@" && return 0
-        sleep 1
-    done
-    fail "never $what (last: ${n:-${share:-n/a}})"
 }
 
 # 1. A picture, and it settles with the camera still (the ball's bob stays under 1 %).
-wait_until "a still picture settled" settled
+wait_for "a still picture settled" settled
 note "settled on a still camera ($n of $PIXELS pixels differ between three shots)"
 shot start
 
@@ -69,7 +61,7 @@ shot start
 moved() { shot now; n=$(differing "$WORK/start-scene.png" "$WORK/now-scene.png"); [ "$n" -gt $((PIXELS / 5)) ]; }
 hold d moved || fail "holding D did not move the camera (only $n pixels differ)"
 note "strafing changed $n of $PIXELS pixels"
-wait_until "the picture settled after the strafe" settled
+wait_for "the picture settled after the strafe" settled
 note "settled after the strafe ($n pixels differ between three shots)"
 
 # 3. The motion debug view: black where nothing moves, lit while the camera moves. F2 steps through the
@@ -78,8 +70,8 @@ views=$("$PPR" --help 2>&1 | sed -n 's/^ *debug=\([a-z|]*\) .*/\1/p' | tr '|' '\
 steps=$(printf '%s\n' "$views" | grep -n -x motion | cut -d: -f1)
 [ -n "$steps" ] || fail "ppr --help lists no debug view 'motion'"
 for _ in $(seq 2 "$steps"); do xdotool key F2; done
-dark() { shot motion; share=$(lit "$WORK/motion-scene.png"); above 0.15 "$share"; }
-wait_until "the motion view was dark on a still camera" dark
+dark() { shot motion; share=$(lit "$WORK/motion-scene.png"); measured="$share lit"; above 0.15 "$share"; }
+wait_for "the motion view was dark on a still camera" dark
 note "motion view, still camera: $share of the scene lit"
 bright() { shot motion; share=$(lit "$WORK/motion-scene.png"); above "$share" 0.3; }
 hold w bright || fail "the motion view stayed dark while W was held ($share lit)"
@@ -90,7 +82,7 @@ for _ in $(seq "$steps" "$(printf '%s\n' "$views" | wc -l)"); do xdotool key F2;
 sleep 1
 xdotool key F12
 capture_has() { [ -s "$WORK/out/$1/report.json" ] && sleep 1 && grep -q "$2" "$WORK/out/$1/report.json"; }
-wait_until "F12 wrote view-capture-1" capture_has view-capture-1 '"debug": "none"'
+wait_for "F12 wrote view-capture-1" capture_has view-capture-1 '"debug": "none"'
 grep -q '"taa": "1"' "$WORK/out/view-capture-1/report.json" || fail "view-capture-1 was not taken with taa=1"
 grep -q '"validation_errors": 0' "$WORK/out/view-capture-1/report.json" || fail "view-capture-1: validation_errors is not 0"
 note "F12 captured the TAA frame (view-capture-1)"
@@ -100,7 +92,7 @@ xdotool key F3
 shot start
 hold a moved || fail "holding A after F3 did not move the camera (only $n pixels differ)"
 xdotool key F12
-wait_until "F12 wrote view-capture-2 with ssr-brute" capture_has view-capture-2 '"technique": "ssr-brute"'
+wait_for "F12 wrote view-capture-2 with ssr-brute" capture_has view-capture-2 '"technique": "ssr-brute"'
 note "F3 switched to ssr-brute and the camera moved"
 
 # 6. Resize with TAA on: the new area is drawn.
@@ -113,7 +105,7 @@ drawn() {
     sd=$(convert "$WORK/strip.png" -format '%[fx:standard_deviation]' info:)
     above "$sd" 0.03
 }
-wait_until "the resized window was drawn" drawn
+wait_for "the resized window was drawn" drawn
 note "resized to 800x450, new area drawn"
 
 # 7. Clean exit: exit code 0 = no validation errors.
