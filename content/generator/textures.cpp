@@ -62,6 +62,37 @@ Cell masonryCell(int x, int y, int blockW, int blockH, int size, bool stagger) {
     return {cx % (size / blockW), cy, edge};
 }
 
+// What a material generator says about one texel.
+struct Texel {
+    Rgb color;
+    float height;     // for the normal map
+    float roughness;  // for the metallic-roughness image
+};
+
+// The wrapping height field of `size`² texels given per texel centre (u, v in [0, 1)).
+template <class HeightAt>
+std::vector<float> heightField(int size, HeightAt heightAt) {
+    std::vector<float> height(static_cast<size_t>(size) * size);
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) height[static_cast<size_t>(y) * size + x] = heightAt(x, y, (x + 0.5f) / size, (y + 0.5f) / size);
+    return height;
+}
+
+// A material's three images from its texels (texelAt(x, y, u, v) → Texel), the normal map from the
+// heights with `bumpStrength`.
+template <class TexelAt>
+TextureSet textureSet(int size, float bumpStrength, TexelAt texelAt) {
+    TextureSet set{blank(size), {}, blank(size)};
+    const std::vector<float> height = heightField(size, [&](int x, int y, float u, float v) {
+        const Texel t = texelAt(x, y, u, v);
+        put(set.baseColor, x, y, t.color);
+        put(set.metallicRoughness, x, y, roughnessTexel(t.roughness));
+        return t.height;
+    });
+    set.normal = normalMapFromHeight(height, size, size, bumpStrength);
+    return set;
+}
+
 }  // namespace
 
 Image normalMapFromHeight(const std::vector<float>& h, int w, int hgt, float strength) {
@@ -89,82 +120,60 @@ TextureSet floorTiles(int size) {
     const int tile = size / 4;
     const Rgb stoneA{0.60f, 0.58f, 0.54f}, stoneB{0.72f, 0.68f, 0.61f}, stoneC{0.52f, 0.53f, 0.55f};
     const Rgb grout{0.30f, 0.29f, 0.27f};
-    TextureSet set{blank(size), {}, blank(size)};
-    std::vector<float> height(static_cast<size_t>(size) * size);
-    for (int y = 0; y < size; ++y) {
-        for (int x = 0; x < size; ++x) {
-            const float u = (x + 0.5f) / size, v = (y + 0.5f) / size;
-            const Cell c = masonryCell(x, y, tile, tile, size, false);
-            const uint32_t id = static_cast<uint32_t>(c.cy * 16 + c.cx);
-            const float slab = smoothstep(2.0f, 5.5f, c.edge);
-            const float coarse = fbm(u, v, 4, 3, 11u + id);  // per-slab cloudiness
-            const float fine = fbm(u, v, 16, 4, 23u);
-            const float pick = hash01(id, 0, 7u);
-            Rgb stone = pick < 0.45f ? blend(stoneA, stoneB, hash01(id, 1, 7u)) : pick < 0.8f ? stoneB : stoneC;
-            stone = scale(stone, 0.82f + 0.22f * coarse + 0.12f * (fine - 0.5f));
-            // Dark pits where the fine noise dips, for texture at close range.
-            const float pit = smoothstep(0.30f, 0.24f, fine);
-            stone = scale(stone, 1.0f - 0.12f * pit);
-            put(set.baseColor, x, y, blend(grout, stone, slab));
-            height[static_cast<size_t>(y) * size + x] =
-                slab * (0.85f + 0.1f * hash01(id, 2, 7u)) + 0.25f * (fine - 0.5f) * slab - 0.3f * pit;
-            put(set.metallicRoughness, x, y, roughnessTexel(0.95f - slab * (0.22f - 0.12f * coarse)));
-        }
-    }
-    set.normal = normalMapFromHeight(height, size, size, 2.0f);
-    return set;
+    return textureSet(size, 2.0f, [&](int x, int y, float u, float v) {
+        const Cell c = masonryCell(x, y, tile, tile, size, false);
+        const uint32_t id = static_cast<uint32_t>(c.cy * 16 + c.cx);
+        const float slab = smoothstep(2.0f, 5.5f, c.edge);
+        const float coarse = fbm(u, v, 4, 3, 11u + id);  // per-slab cloudiness
+        const float fine = fbm(u, v, 16, 4, 23u);
+        const float pick = hash01(id, 0, 7u);
+        Rgb stone = pick < 0.45f ? blend(stoneA, stoneB, hash01(id, 1, 7u)) : pick < 0.8f ? stoneB : stoneC;
+        stone = scale(stone, 0.82f + 0.22f * coarse + 0.12f * (fine - 0.5f));
+        // Dark pits where the fine noise dips, for texture at close range.
+        const float pit = smoothstep(0.30f, 0.24f, fine);
+        stone = scale(stone, 1.0f - 0.12f * pit);
+        return Texel{.color = blend(grout, stone, slab),
+                     .height = slab * (0.85f + 0.1f * hash01(id, 2, 7u)) + 0.25f * (fine - 0.5f) * slab - 0.3f * pit,
+                     .roughness = 0.95f - slab * (0.22f - 0.12f * coarse)};
+    });
 }
 
 TextureSet bricks(int size) {
     const int bw = size / 4, bh = size / 8;
     const Rgb palette[4] = {{0.58f, 0.26f, 0.18f}, {0.66f, 0.33f, 0.22f}, {0.50f, 0.22f, 0.16f}, {0.70f, 0.42f, 0.30f}};
     const Rgb mortar{0.66f, 0.63f, 0.58f};
-    TextureSet set{blank(size), {}, blank(size)};
-    std::vector<float> height(static_cast<size_t>(size) * size);
-    for (int y = 0; y < size; ++y) {
-        for (int x = 0; x < size; ++x) {
-            const float u = (x + 0.5f) / size, v = (y + 0.5f) / size;
-            const Cell c = masonryCell(x, y, bw, bh, size, true);
-            const uint32_t id = static_cast<uint32_t>(c.cy * 16 + c.cx);
-            const float brick = smoothstep(3.0f, 6.0f, c.edge);
-            const float fine = fbm(u, v, 16, 4, 41u);
-            const float blotch = fbm(u, v, 8, 3, 43u + id);
-            Rgb col = palette[hash3(id, 3, 5u) % 4];
-            col = scale(col, 0.85f + 0.25f * blotch + 0.15f * (fine - 0.5f));
-            // A few soot-darkened bricks break up the repetition.
-            if (hash01(id, 4, 5u) < 0.12f) col = scale(col, 0.7f);
-            put(set.baseColor, x, y, blend(scale(mortar, 0.9f + 0.2f * fine), col, brick));
-            height[static_cast<size_t>(y) * size + x] = 0.15f + brick * (0.85f + 0.3f * (blotch - 0.5f)) + 0.2f * (fine - 0.5f);
-            put(set.metallicRoughness, x, y, roughnessTexel(brick > 0.5f ? 0.8f + 0.1f * fine : 0.95f));
-        }
-    }
-    set.normal = normalMapFromHeight(height, size, size, 2.5f);
-    return set;
+    return textureSet(size, 2.5f, [&](int x, int y, float u, float v) {
+        const Cell c = masonryCell(x, y, bw, bh, size, true);
+        const uint32_t id = static_cast<uint32_t>(c.cy * 16 + c.cx);
+        const float brick = smoothstep(3.0f, 6.0f, c.edge);
+        const float fine = fbm(u, v, 16, 4, 41u);
+        const float blotch = fbm(u, v, 8, 3, 43u + id);
+        Rgb col = palette[hash3(id, 3, 5u) % 4];
+        col = scale(col, 0.85f + 0.25f * blotch + 0.15f * (fine - 0.5f));
+        // A few soot-darkened bricks break up the repetition.
+        if (hash01(id, 4, 5u) < 0.12f) col = scale(col, 0.7f);
+        return Texel{.color = blend(scale(mortar, 0.9f + 0.2f * fine), col, brick),
+                     .height = 0.15f + brick * (0.85f + 0.3f * (blotch - 0.5f)) + 0.2f * (fine - 0.5f),
+                     .roughness = brick > 0.5f ? 0.8f + 0.1f * fine : 0.95f};
+    });
 }
 
 TextureSet sandstone(int size) {
     const int bw = size / 2, bh = size / 4;
     const Rgb base{0.80f, 0.70f, 0.54f}, joint{0.55f, 0.49f, 0.40f};
-    TextureSet set{blank(size), {}, blank(size)};
-    std::vector<float> height(static_cast<size_t>(size) * size);
-    for (int y = 0; y < size; ++y) {
-        for (int x = 0; x < size; ++x) {
-            const float u = (x + 0.5f) / size, v = (y + 0.5f) / size;
-            const Cell c = masonryCell(x, y, bw, bh, size, true);
-            const uint32_t id = static_cast<uint32_t>(c.cy * 16 + c.cx);
-            const float block = smoothstep(1.0f, 3.5f, c.edge);
-            const float fine = fbm(u, v, 16, 3, 61u);
-            const float coarse = fbm(u, v, 4, 3, 67u + id);
-            // Sedimentary strata: horizontal bands bent by noise (integer frequency keeps it tileable).
-            const float strata = 0.5f + 0.5f * std::sin(6.2831853f * (16.0f * v) + 2.0f * coarse);
-            Rgb col = scale(base, 0.86f + 0.14f * hash01(id, 1, 9u) + 0.1f * (coarse - 0.5f) - 0.03f * strata);
-            put(set.baseColor, x, y, blend(joint, col, block));
-            height[static_cast<size_t>(y) * size + x] = block * (0.9f + 0.2f * (coarse - 0.5f)) + 0.15f * (fine - 0.5f);
-            put(set.metallicRoughness, x, y, roughnessTexel(0.85f + 0.1f * fine));
-        }
-    }
-    set.normal = normalMapFromHeight(height, size, size, 1.5f);
-    return set;
+    return textureSet(size, 1.5f, [&](int x, int y, float u, float v) {
+        const Cell c = masonryCell(x, y, bw, bh, size, true);
+        const uint32_t id = static_cast<uint32_t>(c.cy * 16 + c.cx);
+        const float block = smoothstep(1.0f, 3.5f, c.edge);
+        const float fine = fbm(u, v, 16, 3, 61u);
+        const float coarse = fbm(u, v, 4, 3, 67u + id);
+        // Sedimentary strata: horizontal bands bent by noise (integer frequency keeps it tileable).
+        const float strata = 0.5f + 0.5f * std::sin(6.2831853f * (16.0f * v) + 2.0f * coarse);
+        Rgb col = scale(base, 0.86f + 0.14f * hash01(id, 1, 9u) + 0.1f * (coarse - 0.5f) - 0.03f * strata);
+        return Texel{.color = blend(joint, col, block),
+                     .height = block * (0.9f + 0.2f * (coarse - 0.5f)) + 0.15f * (fine - 0.5f),
+                     .roughness = 0.85f + 0.1f * fine};
+    });
 }
 
 Image marble(int size) {
@@ -192,20 +201,17 @@ Image rippleNormals(int size) {
     };
     const Drop drops[] = {{0.21f, 0.30f, 0.0f, 1.0f}, {0.68f, 0.18f, 1.7f, 0.8f}, {0.47f, 0.71f, 3.1f, 1.0f},
                           {0.85f, 0.80f, 0.6f, 0.7f}, {0.10f, 0.84f, 2.2f, 0.6f}};
-    std::vector<float> height(static_cast<size_t>(size) * size);
-    for (int y = 0; y < size; ++y)
-        for (int x = 0; x < size; ++x) {
-            const float u = (x + 0.5f) / size, v = (y + 0.5f) / size;
-            float h = 0.0f;
-            for (const Drop& d : drops) {
-                float dx = std::fabs(u - d.x), dy = std::fabs(v - d.y);
-                dx = std::min(dx, 1.0f - dx);
-                dy = std::min(dy, 1.0f - dy);
-                const float r = std::sqrt(dx * dx + dy * dy);
-                h += d.amplitude * std::sin(6.2831853f * 9.0f * r - d.phase) * std::exp(-7.0f * r);
-            }
-            height[static_cast<size_t>(y) * size + x] = h;
+    const std::vector<float> height = heightField(size, [&](int, int, float u, float v) {
+        float h = 0.0f;
+        for (const Drop& d : drops) {
+            float dx = std::fabs(u - d.x), dy = std::fabs(v - d.y);
+            dx = std::min(dx, 1.0f - dx);
+            dy = std::min(dy, 1.0f - dy);
+            const float r = std::sqrt(dx * dx + dy * dy);
+            h += d.amplitude * std::sin(6.2831853f * 9.0f * r - d.phase) * std::exp(-7.0f * r);
         }
+        return h;
+    });
     return normalMapFromHeight(height, size, size, 1.2f);
 }
 
@@ -213,37 +219,26 @@ TextureSet polishedTiles(int size) {
     const int tile = size / 4;
     const Rgb tileA{0.74f, 0.72f, 0.68f}, tileB{0.66f, 0.64f, 0.61f};
     const Rgb grout{0.22f, 0.21f, 0.20f};
-    TextureSet set{blank(size), {}, blank(size)};
-    std::vector<float> height(static_cast<size_t>(size) * size);
-    for (int y = 0; y < size; ++y) {
-        for (int x = 0; x < size; ++x) {
-            const float u = (x + 0.5f) / size, v = (y + 0.5f) / size;
-            const Cell c = masonryCell(x, y, tile, tile, size, false);
-            const uint32_t id = static_cast<uint32_t>(c.cy * 16 + c.cx);
-            // Grout 2 texels wide, then a rounded bevel over the next 6 texels, then a flat glossy top.
-            const float bevel = smoothstep(1.5f, 8.0f, c.edge);
-            const float inGrout = 1.0f - smoothstep(1.0f, 2.0f, c.edge);
-            const float cloud = fbm(u, v, 4, 3, 131u + id);
-            const Rgb stone = scale(((c.cx + c.cy) & 1) ? tileA : tileB, 0.92f + 0.12f * cloud);
-            put(set.baseColor, x, y, blend(stone, grout, inGrout));
-            height[static_cast<size_t>(y) * size + x] = std::sqrt(bevel) * 0.9f - 0.25f * inGrout;
-            put(set.metallicRoughness, x, y, roughnessTexel(0.04f + 0.7f * inGrout));
-        }
-    }
-    set.normal = normalMapFromHeight(height, size, size, 3.0f);
-    return set;
+    return textureSet(size, 3.0f, [&](int x, int y, float u, float v) {
+        const Cell c = masonryCell(x, y, tile, tile, size, false);
+        const uint32_t id = static_cast<uint32_t>(c.cy * 16 + c.cx);
+        // Grout 2 texels wide, then a rounded bevel over the next 6 texels, then a flat glossy top.
+        const float bevel = smoothstep(1.5f, 8.0f, c.edge);
+        const float inGrout = 1.0f - smoothstep(1.0f, 2.0f, c.edge);
+        const float cloud = fbm(u, v, 4, 3, 131u + id);
+        const Rgb stone = scale(((c.cx + c.cy) & 1) ? tileA : tileB, 0.92f + 0.12f * cloud);
+        return Texel{.color = blend(stone, grout, inGrout),
+                     .height = std::sqrt(bevel) * 0.9f - 0.25f * inGrout,
+                     .roughness = 0.04f + 0.7f * inGrout};
+    });
 }
 
 Image wavyGlassNormals(int size) {
-    std::vector<float> height(static_cast<size_t>(size) * size);
-    for (int y = 0; y < size; ++y)
-        for (int x = 0; x < size; ++x) {
-            const float u = (x + 0.5f) / size, v = (y + 0.5f) / size;
-            // Integer frequencies keep it tileable; the drawing direction is vertical (long waves in v).
-            const float w = std::sin(6.2831853f * (3.0f * u + 0.5f * std::sin(6.2831853f * v))) +
-                            0.35f * std::sin(6.2831853f * (7.0f * u + 2.0f * v)) + 0.6f * (fbm(u, v, 4, 3, 151u) - 0.5f);
-            height[static_cast<size_t>(y) * size + x] = w;
-        }
+    const std::vector<float> height = heightField(size, [](int, int, float u, float v) {
+        // Integer frequencies keep it tileable; the drawing direction is vertical (long waves in v).
+        return std::sin(6.2831853f * (3.0f * u + 0.5f * std::sin(6.2831853f * v))) +
+               0.35f * std::sin(6.2831853f * (7.0f * u + 2.0f * v)) + 0.6f * (fbm(u, v, 4, 3, 151u) - 0.5f);
+    });
     return normalMapFromHeight(height, size, size, 1.0f);
 }
 
