@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The measurements of docs/performance.md's GPU sections, in one run (the H200 session of 2026-11-29
 # ran these): the bench at each size, the width and hierarchy-skip rows, the normal-mapped view, TAA,
-# the open goals' ratios in rounds, then the GPU tests and a compare under validation. Each step's output lands in OUT/<step>/ and its
-# log in OUT/<step>.log; OUT/steps.txt says what each step returned and took.
+# the open goals' ratios in rounds, then the GPU tests and a compare under validation. Each step's
+# output lands in OUT/<step>/ and its log in OUT/<step>.log; OUT/steps.txt says what each step
+# returned and took.
 #   scripts/gpu-bench.sh [--ppr EXE] [--tests EXE] [--out DIR] [--sizes "1920x1080 3840x2160"]
 #                        [--frames N] [--warmup N] [--no-tests]
 # A timing never fails the script; a failed step is recorded and the next one runs. Exit 1 if any failed.
@@ -54,9 +55,10 @@ for size in $sizes; do
   step "taa_$size" "$ppr" bench --size "$size" $timing --set taa=1 --sweep techniques --technique ppr \
     --technique floor --technique ssr-hiz --out "$out/taa_$size"
   # The open goals' ratios, each taken within a round (bench.md "Rounds"): issue 15's planar part /
-  # ssr-hiz and 1 024 / 1 reflectors, issue 19's ppr.reflect against the slides' pass, issue 16's TAA
-  # against the floor pass, and the split's second history (taa_split=1 against 0).
-  step "goals_$size" "$ppr" bench --size "$size" $timing --rounds 3 --sweep techniques --sweep reflectors \
+  # ssr-hiz, PPR / floor, classify / floor, 1 024 / 1 reflectors and ppr.reflect at 5 % / 100 %
+  # coverage; issue 19's ppr.reflect against the slides' pass; issue 16's TAA against the floor pass,
+  # and the split's second history (taa_split=1 against 0).
+  step "goals_$size" "$ppr" bench --size "$size" $timing --rounds 3 --sweep techniques --sweep reflectors --sweep coverage \
     --technique ppr --technique ppr@holes=slides,facing=0 --technique ppr@taa=1 --technique ppr@taa=1,taa_split=0 \
     --technique ssr-hiz --technique floor --out "$out/goals_$size"
 done

@@ -45,6 +45,15 @@ std::vector<std::string> coverageCameras(const BenchResults& r) {
     return out;
 }
 
+// The indirect row of the view with the largest reflective fraction: issue 15 divides each view's
+// indirect reflection pass (with its clear) by that one's, so the cost should follow the fraction.
+const BenchCoverageRow* fullestIndirectRow(const BenchResults& r) {
+    const BenchCoverageRow* fullest = nullptr;
+    for (const BenchCoverageRow& row : r.coverage)
+        if (row.indirect && (!fullest || row.reflectiveTiles > fullest->reflectiveTiles)) fullest = &row;
+    return fullest;
+}
+
 nlohmann::json numberOrNull(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
 
 // Sum of the passes `counts` selects.
@@ -304,18 +313,26 @@ std::string roundsSection(const BenchResults& r) {
     }
     if (!r.coverage.empty() && r.coverage.front().roundReflectMs.size() >= 2) {
         md += "### Reflective screen fraction per round (`ppr.reflect` ms; median in brackets)\n\n"
-              "| camera | indirect=1 (+ clear) | indirect=0 | indirect / whole screen |\n|---|---|---|---|\n";
+              "| camera | indirect=1 (+ clear) | indirect=0 | indirect / whole screen | indirect / fullest view's |\n|---|---|---|---|---|\n";
+        auto indirectMs = [](const BenchCoverageRow* row) {
+            std::vector<double> ms;
+            for (size_t i = 0; row && i < row->roundReflectMs.size() && i < row->roundClearMs.size(); ++i)
+                ms.push_back(row->roundReflectMs[i] + row->roundClearMs[i]);
+            return ms;
+        };
+        const std::vector<double> fullestMs = indirectMs(fullestIndirectRow(r));
         for (const std::string& cam : coverageCameras(r)) {
             const BenchCoverageRow* on = findRow(r, cam, true);
             const BenchCoverageRow* off = findRow(r, cam, false);
-            std::vector<double> onMs, ratios;
-            for (size_t i = 0; on && i < on->roundReflectMs.size() && i < on->roundClearMs.size(); ++i) {
-                onMs.push_back(on->roundReflectMs[i] + on->roundClearMs[i]);
-                if (off && i < off->roundReflectMs.size() && off->roundReflectMs[i] > 0.0) ratios.push_back(onMs.back() / off->roundReflectMs[i]);
+            const std::vector<double> onMs = indirectMs(on);
+            std::vector<double> ratios, toFullest;
+            for (size_t i = 0; i < onMs.size(); ++i) {
+                if (off && i < off->roundReflectMs.size() && off->roundReflectMs[i] > 0.0) ratios.push_back(onMs[i] / off->roundReflectMs[i]);
+                if (i < fullestMs.size() && fullestMs[i] > 0.0) toFullest.push_back(onMs[i] / fullestMs[i]);
             }
             md += "| " + cam + " | " + (onMs.empty() ? "–" : roundList(onMs, 2)) + " | " +
                   (off && !off->roundReflectMs.empty() ? roundList(off->roundReflectMs, 2) : "–") + " | " +
-                  (ratios.empty() ? "–" : roundList(ratios, 2)) + " |\n";
+                  (ratios.empty() ? "–" : roundList(ratios, 2)) + " | " + (toFullest.empty() ? "–" : roundList(toFullest, 2)) + " |\n";
         }
         md += "\n";
     }
@@ -472,15 +489,20 @@ std::string benchMarkdown(const BenchResults& r, const std::string& commandLine)
     }
     if (!r.coverage.empty()) {
         md += "## Reflective screen fraction (" + r.coverageScene + "): `ppr.reflect` ms\n\n";
-        md += "| camera | reflective tiles | indirect=1 (+ clear) | indirect=0 | indirect / whole screen |\n|---|---:|---:|---:|---:|\n";
+        md += "| camera | reflective tiles | indirect=1 (+ clear) | indirect=0 | indirect / whole screen | indirect / fullest view's |\n"
+              "|---|---:|---:|---:|---:|---:|\n";
+        const BenchCoverageRow* fullest = fullestIndirectRow(r);
+        const double fullestMs = fullest ? fullest->reflectMs + fullest->clearMs : 0.0;
         for (const std::string& cam : coverageCameras(r)) {
             const BenchCoverageRow* on = findRow(r, cam, true);
             const BenchCoverageRow* off = findRow(r, cam, false);
             const double onMs = on ? on->reflectMs + on->clearMs : 0.0;
             md += "| " + cam + " | " + (on ? fixed(on->reflectiveTiles * 100.0, 1) + " %" : "–") + " | " +
                   (on ? fixed(on->reflectMs, 2) + " (+ " + fixed(on->clearMs, 2) + ")" : "–") + " | " + (off ? fixed(off->reflectMs, 2) : "–") +
-                  " | " + (on && off && off->reflectMs > 0 ? fixed(onMs / off->reflectMs, 2) : "–") + " |\n";
+                  " | " + (on && off && off->reflectMs > 0 ? fixed(onMs / off->reflectMs, 2) : "–") + " | " +
+                  (on && fullestMs > 0 ? fixed(onMs / fullestMs, 2) : "–") + " |\n";
         }
+        if (fullest) md += "\nIndirect / fullest view's: issue 15's measure, each view's indirect pass (with its clear) over " + fullest->camera + "'s.\n";
         md += "\n";
     }
     const std::string rounds = roundsSection(r);

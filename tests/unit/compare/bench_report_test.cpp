@@ -283,3 +283,35 @@ TEST(BenchReport, RoundsGiveEachRoundsValuesAndTheRatiosWithinThem) {
     EXPECT_EQ(benchMarkdown(plain, "ppr bench").find("## Rounds"), std::string::npos);
     EXPECT_FALSE(benchJson(plain)["techniques"]["results"]["ppr"].contains("gpu_ms_rounds"));
 }
+
+// Issue 15's coverage measure: each view's indirect reflection pass (with its clear) over that of the
+// view with the largest reflective fraction, whatever order the rows come in; per round too.
+TEST(BenchReport, CoverageRowsGiveTheIndirectPassOverTheFullestViews) {
+    BenchResults r = results();
+    r.coverageScene = "stress:256";
+    auto row = [](const std::string& camera, double fraction, bool indirect, double reflect, double clear) {
+        BenchCoverageRow c;
+        c.camera = camera;
+        c.reflectiveTiles = fraction;
+        c.indirect = indirect;
+        c.reflectMs = reflect;
+        c.clearMs = clear;
+        return c;
+    };
+    r.coverage = {row("reflective_5", 0.065, true, 1.5, 0.5), row("reflective_5", 0.065, false, 10.0, 0.0),
+                  row("reflective_100", 0.998, true, 19.5, 0.5), row("reflective_100", 0.998, false, 20.0, 0.0)};
+    std::string md = benchMarkdown(r, "ppr bench --sweep coverage");
+    EXPECT_NE(md.find("| indirect / whole screen | indirect / fullest view's |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| reflective_5 | 6.5 % | 1.50 (+ 0.50) | 10.00 | 0.20 | 0.10 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| reflective_100 | 99.8 % | 19.50 (+ 0.50) | 20.00 | 1.00 | 1.00 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("over reflective_100's"), std::string::npos) << md;
+
+    r.coverage[0].roundReflectMs = {1.5, 3.5};
+    r.coverage[0].roundClearMs = {0.5, 0.5};
+    r.coverage[1].roundReflectMs = {10.0, 10.0};
+    r.coverage[2].roundReflectMs = {19.5, 39.5};
+    r.coverage[2].roundClearMs = {0.5, 0.5};
+    r.coverage[3].roundReflectMs = {20.0, 20.0};
+    md = benchMarkdown(r, "ppr bench --sweep coverage --rounds 2");
+    EXPECT_NE(md.find("| reflective_5 | 2.00, 4.00 (3.00) | 10.00, 10.00 (10.00) | 0.20, 0.40 (0.30) | 0.10, 0.10 (0.10) |"), std::string::npos) << md;
+}
