@@ -17,6 +17,7 @@ BOOKWORM_PKGS=(
   xvfb xauth xdotool x11-apps imagemagick graphviz assimp-testmodels
   assimp-utils  # scripts/real-scene.sh: the FZK-Haus IFC model to glTF
   time  # scripts/scale-scene.sh: load time and peak memory
+  python3  # scripts/compare-timing.py, heap_floor.py, check-doc-links.py (tests run them)
 )
 BACKPORTS_PKGS=(mesa-vulkan-drivers)
 TRIXIE_PKGS=(libvulkan-memory-allocator-dev)
