@@ -50,6 +50,7 @@ Rgb roughnessTexel(float roughness) { return {1.0f, roughness, 0.0f}; }
 struct Cell {
     int cx, cy;
     float edge;  // texels to the nearest joint centre line
+    uint32_t id() const { return static_cast<uint32_t>(cy * 16 + cx); }  // seeds the block's own noise
 };
 Cell masonryCell(int x, int y, int blockW, int blockH, int size, bool stagger) {
     const int cy = y / blockH;
@@ -122,7 +123,7 @@ TextureSet floorTiles(int size) {
     const Rgb grout{0.30f, 0.29f, 0.27f};
     return textureSet(size, 2.0f, [&](int x, int y, float u, float v) {
         const Cell c = masonryCell(x, y, tile, tile, size, false);
-        const uint32_t id = static_cast<uint32_t>(c.cy * 16 + c.cx);
+        const uint32_t id = c.id();
         const float slab = smoothstep(2.0f, 5.5f, c.edge);
         const float coarse = fbm(u, v, 4, 3, 11u + id);  // per-slab cloudiness
         const float fine = fbm(u, v, 16, 4, 23u);
@@ -144,7 +145,7 @@ TextureSet bricks(int size) {
     const Rgb mortar{0.66f, 0.63f, 0.58f};
     return textureSet(size, 2.5f, [&](int x, int y, float u, float v) {
         const Cell c = masonryCell(x, y, bw, bh, size, true);
-        const uint32_t id = static_cast<uint32_t>(c.cy * 16 + c.cx);
+        const uint32_t id = c.id();
         const float brick = smoothstep(3.0f, 6.0f, c.edge);
         const float fine = fbm(u, v, 16, 4, 41u);
         const float blotch = fbm(u, v, 8, 3, 43u + id);
@@ -163,7 +164,7 @@ TextureSet sandstone(int size) {
     const Rgb base{0.80f, 0.70f, 0.54f}, joint{0.55f, 0.49f, 0.40f};
     return textureSet(size, 1.5f, [&](int x, int y, float u, float v) {
         const Cell c = masonryCell(x, y, bw, bh, size, true);
-        const uint32_t id = static_cast<uint32_t>(c.cy * 16 + c.cx);
+        const uint32_t id = c.id();
         const float block = smoothstep(1.0f, 3.5f, c.edge);
         const float fine = fbm(u, v, 16, 3, 61u);
         const float coarse = fbm(u, v, 4, 3, 67u + id);
@@ -221,7 +222,7 @@ TextureSet polishedTiles(int size) {
     const Rgb grout{0.22f, 0.21f, 0.20f};
     return textureSet(size, 3.0f, [&](int x, int y, float u, float v) {
         const Cell c = masonryCell(x, y, tile, tile, size, false);
-        const uint32_t id = static_cast<uint32_t>(c.cy * 16 + c.cx);
+        const uint32_t id = c.id();
         // Grout 2 texels wide, then a rounded bevel over the next 6 texels, then a flat glossy top.
         const float bevel = smoothstep(1.5f, 8.0f, c.edge);
         const float inGrout = 1.0f - smoothstep(1.0f, 2.0f, c.edge);
