@@ -1,6 +1,7 @@
 #include "bench/bench_report.hpp"
 
 #include "bench/bench_plot.hpp"
+#include "bench/bench_targets.hpp"
 #include "metrics/median.hpp"
 
 #include <algorithm>
@@ -442,6 +443,7 @@ nlohmann::json benchJson(const BenchResults& r) {
         }
         j["sweeps"]["coverage"] = {{"scene", r.coverageScene}, {"rows", rows}};
     }
+    if (const std::vector<BenchTarget> targets = benchTargets(r); !targets.empty()) j["targets"] = benchTargetsJson(targets);
     return j;
 }
 
@@ -505,6 +507,7 @@ std::string benchMarkdown(const BenchResults& r, const std::string& commandLine)
         if (fullest) md += "\nIndirect / fullest view's: issue 15's measure, each view's indirect pass (with its clear) over " + fullest->camera + "'s.\n";
         md += "\n";
     }
+    md += benchTargetsMarkdown(benchTargets(r));
     const std::string rounds = roundsSection(r);
     if (!rounds.empty()) md += "## Rounds\n\n" + rounds;
     return md;
