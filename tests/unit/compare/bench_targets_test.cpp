@@ -134,4 +134,6 @@ TEST(BenchTargets, SweepRatios) {
               std::string::npos)
         << md;
     EXPECT_NE(md.find("| `ppr.reflect` indirect with its clear, reflective_5 / reflective_100 | 0.10 | ≤ 0.10 | yes |"), std::string::npos) << md;
+    EXPECT_NE(md.find("`scripts/compare-timing.py` alternates the two scenes"), std::string::npos) << md;
+    EXPECT_EQ(benchTargetsMarkdown(benchTargets(techniques())).find("compare-timing"), std::string::npos);  // only with that target
 }
