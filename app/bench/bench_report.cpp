@@ -2,23 +2,17 @@
 
 #include "bench/bench_plot.hpp"
 #include "bench/bench_targets.hpp"
+#include "metrics/fixed_text.hpp"
 #include "metrics/median.hpp"
 
 #include <algorithm>
-#include <cstdio>
 #include <functional>
 #include <set>
 
 namespace ppr::app {
 namespace {
 
-std::string fixed(double v, int digits) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-    return buf;
-}
-
-std::string fixedOr(const std::optional<double>& v, int digits, const std::string& absent) { return v ? fixed(*v, digits) : absent; }
+std::string fixedOr(const std::optional<double>& v, int digits, const std::string& absent) { return v ? fixedText(*v, digits) : absent; }
 
 const BenchReflectorRow* findRow(const BenchResults& r, uint32_t n, bool tiles) {
     for (const BenchReflectorRow& row : r.reflectors)
@@ -167,12 +161,12 @@ std::string techniquesTable(const BenchResults& r) {
                      "|---|---:|---:|---:|---:|---:|---:|---:|\n";
     // GPU ms and its ratios: the cells every row of this table starts with.
     auto cost = [&](const std::string& label, double ms) {
-        return "| " + label + " | " + fixed(ms, 2) + " | " + fixedOr(benchRatio(r, ms, "ppr"), 2, "–") + " | " +
+        return "| " + label + " | " + fixedText(ms, 2) + " | " + fixedOr(benchRatio(r, ms, "ppr"), 2, "–") + " | " +
                fixedOr(benchRatio(r, ms, "floor"), 2, "–") + " | ";
     };
     for (const BenchTechnique& t : r.techniques) {
         md += cost(t.name, t.techniqueMs) + fixedOr(t.psnrDb, 2, "ref") + " | " + fixedOr(t.psnrReflectionDb, 2, "ref") + " | " +
-              fixedOr(t.coverage, 4, "ref") + " | " + fixed(t.frameMs, 2) + " |\n";
+              fixedOr(t.coverage, 4, "ref") + " | " + fixedText(t.frameMs, 2) + " |\n";
         // The hierarchy build alone, as the slides quote it apart from the trace.
         if (const auto build = hizBuildMs(t)) md += cost("↳ " + t.name + " hierarchy build (hiz.*)", *build) + "| | | |\n";
         if (const auto parts = pprCostParts(t)) {
@@ -228,7 +222,7 @@ std::string passesTable(const BenchResults& r) {
         md += "| " + pass + " |";
         for (const BenchTechnique& t : r.techniques) {
             const auto it = t.passMs.find(pass);
-            const std::string ms = it == t.passMs.end() ? "" : fixed(it->second, 3);
+            const std::string ms = it == t.passMs.end() ? "" : fixedText(it->second, 3);
             md += " " + (!ms.empty() && t.costPasses.count(pass) ? "**" + ms + "**" : ms) + " |";
         }
         md += "\n";
@@ -239,7 +233,7 @@ std::string passesTable(const BenchResults& r) {
 std::string slidesTable(const BenchResults& r) {
     std::string md = "| technique | slides GTX 1070 4K ms | slides × PPR | ours ms | ours × PPR |\n|---|---:|---:|---:|---:|\n";
     auto line = [&](const std::string& label, double slidesMs, const std::optional<double>& oursMs) {
-        md += "| " + label + " | " + fixed(slidesMs, 2) + " | " + fixed(slidesMs / kSlidesPprMs, 2) + " | " + fixedOr(oursMs, 2, "–") + " | " +
+        md += "| " + label + " | " + fixedText(slidesMs, 2) + " | " + fixedText(slidesMs / kSlidesPprMs, 2) + " | " + fixedOr(oursMs, 2, "–") + " | " +
               fixedOr(oursMs ? benchRatio(r, *oursMs, "ppr") : std::nullopt, 2, "–") + " |\n";
     };
     for (const SlideTiming& s : kSlides) {
@@ -254,8 +248,8 @@ std::string slidesTable(const BenchResults& r) {
 // "a, b, c (median m)": a measure over the rounds.
 std::string roundList(const std::vector<double>& values, int digits) {
     std::string out;
-    for (double v : values) out += (out.empty() ? "" : ", ") + fixed(v, digits);
-    return out + " (" + fixed(median(values), digits) + ")";
+    for (double v : values) out += (out.empty() ? "" : ", ") + fixedText(v, digits);
+    return out + " (" + fixedText(median(values), digits) + ")";
 }
 
 // bench.md's per-round tables (--rounds): each measure as every round gave it and their median, the
@@ -465,7 +459,7 @@ std::string benchMarkdown(const BenchResults& r, const std::string& commandLine)
         for (const auto& [name, why] : r.skippedTechniques) md += "Not run: " + name + " (" + why + ")\n\n";
         for (const BenchTechnique& t : r.techniques)
             if (const auto taa = taaMs(t))
-                md += "TAA in " + t.name + " (taa, taa.*; not in its GPU ms): " + fixed(*taa, 2) + " ms, × floor " +
+                md += "TAA in " + t.name + " (taa, taa.*; not in its GPU ms): " + fixedText(*taa, 2) + " ms, × floor " +
                       fixedOr(benchRatio(r, *taa, "floor"), 2, "–") + "\n\n";
         md += "### Per pass (GPU ms; bold: counted in the technique's GPU ms)\n\n" + passesTable(r) + "\n";
         md += std::string("### Against the slides (") + kSlidesDevice + " at " + std::to_string(kSlidesSize[0]) + "x" +
@@ -477,14 +471,14 @@ std::string benchMarkdown(const BenchResults& r, const std::string& commandLine)
               "|---:|---:|---:|---:|---:|---:|---:|\n";
         const BenchReflectorRow* first = findRow(r, reflectorCounts(r).front(), true);
         auto projection = [](const BenchReflectorRow& row) {
-            return row.reachMs > 0 ? fixed(row.projectMs, 2) + " (+ " + fixed(row.reachMs, 2) + ")" : fixed(row.projectMs, 2);
+            return row.reachMs > 0 ? fixedText(row.projectMs, 2) + " (+ " + fixedText(row.reachMs, 2) + ")" : fixedText(row.projectMs, 2);
         };
         for (uint32_t n : reflectorCounts(r)) {
             const BenchReflectorRow* on = findRow(r, n, true);
             const BenchReflectorRow* off = findRow(r, n, false);
-            md += "| " + std::to_string(n) + " | " + (on ? projection(*on) : "–") + " | " + (off ? fixed(off->projectMs, 2) : "–") +
-                  " | " + (on && off && on->projectionMs() > 0 ? fixed(off->projectionMs() / on->projectionMs(), 2) : "–") + " | " +
-                  (on && first && first->projectionMs() > 0 ? fixed(on->projectionMs() / first->projectionMs(), 2) : "–") + " | " +
+            md += "| " + std::to_string(n) + " | " + (on ? projection(*on) : "–") + " | " + (off ? fixedText(off->projectMs, 2) : "–") +
+                  " | " + (on && off && on->projectionMs() > 0 ? fixedText(off->projectionMs() / on->projectionMs(), 2) : "–") + " | " +
+                  (on && first && first->projectionMs() > 0 ? fixedText(on->projectionMs() / first->projectionMs(), 2) : "–") + " | " +
                   (on ? std::to_string(on->pairs) : "–") + " | " + (on ? std::to_string(on->pairsUnculled) : "–") + " |\n";
         }
         md += "\n";
@@ -499,10 +493,10 @@ std::string benchMarkdown(const BenchResults& r, const std::string& commandLine)
             const BenchCoverageRow* on = findRow(r, cam, true);
             const BenchCoverageRow* off = findRow(r, cam, false);
             const double onMs = on ? on->reflectMs + on->clearMs : 0.0;
-            md += "| " + cam + " | " + (on ? fixed(on->reflectiveTiles * 100.0, 1) + " %" : "–") + " | " +
-                  (on ? fixed(on->reflectMs, 2) + " (+ " + fixed(on->clearMs, 2) + ")" : "–") + " | " + (off ? fixed(off->reflectMs, 2) : "–") +
-                  " | " + (on && off && off->reflectMs > 0 ? fixed(onMs / off->reflectMs, 2) : "–") + " | " +
-                  (on && fullestMs > 0 ? fixed(onMs / fullestMs, 2) : "–") + " |\n";
+            md += "| " + cam + " | " + (on ? fixedText(on->reflectiveTiles * 100.0, 1) + " %" : "–") + " | " +
+                  (on ? fixedText(on->reflectMs, 2) + " (+ " + fixedText(on->clearMs, 2) + ")" : "–") + " | " + (off ? fixedText(off->reflectMs, 2) : "–") +
+                  " | " + (on && off && off->reflectMs > 0 ? fixedText(onMs / off->reflectMs, 2) : "–") + " | " +
+                  (on && fullestMs > 0 ? fixedText(onMs / fullestMs, 2) : "–") + " |\n";
         }
         if (fullest) md += "\nIndirect / fullest view's: issue 15's measure, each view's indirect pass (with its clear) over " + fullest->camera + "'s.\n";
         md += "\n";

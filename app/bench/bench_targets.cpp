@@ -1,8 +1,8 @@
 #include "bench/bench_targets.hpp"
 
 #include "metrics/median.hpp"
+#include "metrics/fixed_text.hpp"
 
-#include <cstdio>
 #include <functional>
 #include <optional>
 
@@ -70,12 +70,6 @@ const BenchReflectorRow* culledRow(const BenchResults& r, uint32_t reflectors) {
     for (const BenchReflectorRow& row : r.reflectors)
         if (row.reflectors == reflectors && row.tiles) return &row;
     return nullptr;
-}
-
-std::string fixed(double v, int digits) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-    return buf;
 }
 
 // The first row run with TAA (--set taa=1 or name@taa=1): its `taa` passes against the floor.
@@ -155,13 +149,13 @@ std::string benchTargetsMarkdown(const std::vector<BenchTarget>& targets) {
                      "median first), against its limit.\n\n"
                      "| target | this run | limit | met |\n|---|---|---:|---|\n";
     for (const BenchTarget& t : targets) {
-        std::string value = fixed(t.value, 2);
+        std::string value = fixedText(t.value, 2);
         if (!t.rounds.empty()) {
             value += " (";
-            for (size_t i = 0; i < t.rounds.size(); ++i) value += (i ? ", " : "") + fixed(t.rounds[i], 2);
+            for (size_t i = 0; i < t.rounds.size(); ++i) value += (i ? ", " : "") + fixedText(t.rounds[i], 2);
             value += ")";
         }
-        md += "| " + t.measure + " | " + value + " | ≤ " + fixed(t.limit, 2) + " | " + (t.met() ? "yes" : "no") + " |\n";
+        md += "| " + t.measure + " | " + value + " | ≤ " + fixedText(t.limit, 2) + " | " + (t.met() ? "yes" : "no") + " |\n";
     }
     for (const BenchTarget& t : targets)
         if (t.key == "projection_1024_to_1")

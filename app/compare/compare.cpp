@@ -4,6 +4,7 @@
 #include "capture/report.hpp"
 #include "metrics/contact_sheet.hpp"
 #include "metrics/error_breakdown.hpp"
+#include "metrics/fixed_text.hpp"
 #include "render/headless_session.hpp"
 
 #include <cstdio>
@@ -68,12 +69,6 @@ nlohmann::json breakdownJson(const ErrorBreakdown& b) {
             {"error_share_worst_10pct", b.worst10PercentShare},
             {"error_classes", classes},
             {"error_classes_geometric", b.pathKnown}};
-}
-
-std::string fixed(double v, int digits) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-    return buf;
 }
 
 }  // namespace
@@ -181,8 +176,8 @@ int runCompare(const Options& o) {
                             cam.name.c_str(), t.c_str(), glass["psnr_db_glass"].get<double>(), glass["psnr_reflection_db_glass"].get<double>(),
                             glass["coverage_glass"].get<double>(), static_cast<unsigned long long>(glass["scored_texels_glass"].get<uint64_t>()));
             finals.push_back({t + " (final)", r.image});
-            finals.back().label = t + ": " + fixed(psnr, 1) + " dB as composited";
-            reflections.push_back({t + " reflection: " + fixed(s.psnrDb, 1) + " dB, coverage " + fixed(s.coverage, 3),
+            finals.back().label = t + ": " + fixedText(psnr, 1) + " dB as composited";
+            reflections.push_back({t + " reflection: " + fixedText(s.psnrDb, 1) + " dB, coverage " + fixedText(s.coverage, 3),
                                    reflectionDisplayImage(reflection, exposure)});
             errors.push_back({t + " error (white = 0.25)", heat});
             std::printf("ppr: %-8s %-7s PSNR %6.2f dB (reflection alone %6.2f dB)  coverage %.4f  %8.2f ms GPU (technique passes)\n",
