@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# The README's viewer and editor pictures (scripts/docs-images.sh calls this): `ppr view` at 1280x720
+# on the puddles camera in a private Xvfb display (the UI tests' tests/ui/ui_lib.sh), screenshot →
+# WORK_DIR/viewer.png; then the Reflectors window opened and the large puddle selected by a click on
+# it → WORK_DIR/editor.png. Nothing is saved. The panel shows frame times and the animation's clock, so
+# these two pictures differ on every run.
+#   scripts/docs-images-ui.sh PPR_BINARY WORK_DIR
+set -uo pipefail
+TEST=docs-images-ui
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+# shellcheck source=../tests/ui/ui_lib.sh
+source "$root/tests/ui/ui_lib.sh" "$@"
+
+# A copy of the scene's reflector file, opened by a relative name so that the editor's title shows
+# no machine's path.
+ppr_abs="$(cd "$(dirname "$PPR")" && pwd)/$(basename "$PPR")"
+cp "$(dirname "$ppr_abs")/../content/default/default.reflectors.json" "$WORK/" || fail "no default reflector file next to $PPR"
+(cd "$WORK" && exec "$ppr_abs" view --size 1280x720 --camera puddles --reflectors default.reflectors.json --out out) >"$WORK/viewer.log" 2>&1 &
+VIEWER_PID=$!
+find_window
+[ "$WW" -eq 1280 ] && [ "$WH" -eq 720 ] || fail "window is ${WW}x${WH}, expected 1280x720"
+xdotool mousemove --sync $((WX + 640)) $((WY + 700))  # out of the panels' way
+scene_region
+drawn() { shot viewer && awk "BEGIN{exit !($(convert "$WORK/viewer-scene.png" -format '%[fx:standard_deviation]' info:) > 0.03)}"; }
+wait_for "a picture in the window" drawn
+sleep 8  # the panel's frame times settle
+shot viewer
+note "viewer.png"
+
+# The Reflectors window's collapse arrow (top right), then a click on the large puddle selects it.
+xdotool mousemove --sync $((WX + 921)) $((WY + 17)) click 1
+sleep 3
+xdotool mousemove --sync $((WX + 560)) $((WY + 520)) click 1
+selected() {  # the selection outline (editor_ui.cpp's yellow) is on screen
+    shot editor && [ "$(convert "$WORK/editor.png" -fill black +opaque 'rgb(255,200,40)' -fill white -opaque 'rgb(255,200,40)' -format '%[fx:mean*w*h]' info:)" != 0 ]
+}
+wait_for "the puddle selected" selected
+xdotool mousemove --sync $((WX + 640)) $((WY + 700))
+sleep 4
+shot editor
+note "editor.png"
+close_viewer
