@@ -24,6 +24,8 @@ passes::TaaReflectionInputs taaReflectionInputs(const graph::Blackboard& board, 
     r.stillSpread = settings.taa.stillSpread;
     r.motionCap = settings.taa.reflectionCap;
     r.rimKeep = settings.taa.rimKeep;
+    r.stillRange = settings.taa.stillRange;
+    r.stillKeep = settings.taa.stillKeep;
     r.threads = settings.taa.threads;
     return r;
 }
@@ -118,6 +120,8 @@ void Renderer::resetTaaHistory(const FrameRequest& req) {
     lastTechnique_ = req.technique;
     const bool splitChanged = lastTaaSplit_ != req.settings.taa.split;
     lastTaaSplit_ = req.settings.taa.split;
+    const bool rangeChanged = lastTaaStillRange_ != req.settings.taa.stillRange;
+    lastTaaStillRange_ = req.settings.taa.stillRange;
     // A new shot starts the jitter sequence again: the same shot renders the same frames, whichever
     // shots came before (compare's rows stay comparable frame by frame).
     if (req.cameraCut) taaFrames_ = 0;
@@ -126,6 +130,7 @@ void Renderer::resetTaaHistory(const FrameRequest& req) {
         if (!history.contains(name)) continue;
         if (changed) history.reset(name, "technique change");
         if (splitChanged) history.reset(name, "taa_split change");
+        if (rangeChanged) history.reset(name, "taa_still_range change");
         if (req.cameraCut) history.reset(name, "camera cut");
     }
 }
@@ -201,6 +206,7 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
         t.average = settings.taa.average;
         t.motionCap = settings.taa.motionCap;
         t.stillSpread = settings.taa.stillSpread;
+        t.stillRange = settings.taa.stillRange;
         t.threads = settings.taa.threads;
         const ReflectionDistance* path = board.find<ReflectionDistance>();
         if (path && settings.taa.reproject == Reproject::Virtual) t.reflectedPath = path->image;

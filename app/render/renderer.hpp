@@ -111,6 +111,7 @@ private:
     uint32_t taaFrames_ = 0;            // TAA frames recorded: the jitter sequence's position
     std::string lastTechnique_;         // a technique change drops TAA's history
     bool lastTaaSplit_ = true;          // so does taa_split: its history holds the surface part alone
+    bool lastTaaStillRange_ = true;     // and taa_still_range: the spread images hold a range or moments
 };
 
 }  // namespace ppr::app

@@ -72,6 +72,8 @@ struct TaaSettings {         // owner: taa (passes/taa)
     bool reflectionCap;      // with average: the same cap on the reflection's own history (off by default: docs/temporal.md)
     bool rimKeep;            // with average: a moving pixel the jitter takes off a reflector keeps its reflection's history
     bool stillSpread;        // with average: a still pixel's own spread over its run, not only the 3×3 box, decides a clip
+    bool stillRange;         // with stillSpread: that spread is the run's luma range (else its moments)
+    bool stillKeep;          // with average: a still pixel's reflection history is never rejected by its path's depth
     uint32_t threads;        // both resolves' invocations per 16x16 tile (passes/taa/taa_threads.hpp); 0: auto
 };
 

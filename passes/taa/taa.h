@@ -38,6 +38,10 @@ PPR_CONST(float, kTaaMotionCap, 0.3f)
 // deviations (plus the floor, about one 8-bit level) of the run's own luma mean. One jittered frame's
 // 3×3 may lie wholly on one side of an edge that the jitter cycle straddles; the pixel's own frames
 // show how far it moves.
+// taa_still_range=1 (with taa_still_spread=1): the test is the run's luma range instead, from its first
+// frame on (plus the same floor): a line thinner than a pixel lies outside a few frames' variance but
+// inside their range. taa_still_keep=1: a still pixel's reflection history is not rejected as another
+// surface's when only the jitter changed the reflected path (a reflector's rim).
 PPR_CONST(float, kTaaSpreadSamples, 4.0f)
 PPR_CONST(float, kTaaSpreadSigma, 2.5f)
 PPR_CONST(float, kTaaSpreadFloor, 0.004f)
@@ -66,9 +70,11 @@ struct TaaReflectionPush {
     float stillSpread;  // taa_still_spread with taa_average: kTaaSpreadSigma, or 0 (off: the 3×3 box alone; the moments image is a stand-in)
     float motionCap;    // taa_reflection_cap with taa_average: kTaaMotionCap, or 0 (off: the feedback alone)
     uint rimKeep;       // taa_rim_keep with taa_average: a moving pixel without a reflection keeps its history (1) or not (0)
+    uint stillRange;    // taa_still_range with taa_still_spread: the still run's luma range decides (1), or its moments (0)
+    uint stillKeep;     // taa_still_keep with taa_average: a still pixel's history is never rejected by its path's depth (1)
 };
 PPR_END
-PPR_SIZE_CHECK(TaaReflectionPush, 24);
+PPR_SIZE_CHECK(TaaReflectionPush, 32);
 
 PPR_BEGIN
 struct TaaPush {
@@ -81,8 +87,9 @@ struct TaaPush {
     uint keptReflection;
     float motionCap;  // taa_motion_cap with taa_average: kTaaMotionCap, or 0 (off: the feedback alone)
     float stillSpread;  // taa_still_spread with taa_average: kTaaSpreadSigma, or 0 (off: the 3×3 box alone; the moments image is a stand-in)
+    uint stillRange;    // taa_still_range with taa_still_spread: the still run's luma range decides (1), or its moments (0)
 };
 PPR_END
-PPR_SIZE_CHECK(TaaPush, 20);
+PPR_SIZE_CHECK(TaaPush, 24);
 
 #endif

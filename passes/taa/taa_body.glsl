@@ -129,7 +129,7 @@ void resolvePixel(ivec2 pix, ivec2 local) {
 #endif
 #ifdef PPR_TAA_AVERAGE
     vec2 samples = kFirstSamples;  // what the new history holds (taa_color.glsl)
-    vec2 spread = firstSpread(currentY);
+    vec2 spread = firstSpread(currentY, pc.stillRange != 0u);
 #endif
     if (pc.historyValid != 0u && onScreen) {
         vec3 historyRgb = sampleCatmullRom(historyColor, historyUv);
@@ -143,7 +143,7 @@ void resolvePixel(ivec2 pix, ivec2 local) {
         vec3 history = toYCoCg(compress(historyRgb));
 #ifdef PPR_TAA_AVERAGE
         HistoryBlend blend = blendHistory(currentY, history, mean, sigma, historyUv, historySamples, historySpread, pc.stillSpread > 0.0,
-                                          motionFeedbackCap(historyUv, pc.motionCap), pc.stillSpread);
+                                          motionFeedbackCap(historyUv, pc.motionCap), pc.stillSpread, pc.stillRange != 0u);
         history = blend.history;
         float feedback = blend.feedback;
         samples = blend.samples;

@@ -42,11 +42,11 @@ vec3 clipToBox(vec3 history, vec3 center, vec3 extents) {
 }
 
 // taa_average=1 (the *_average shader variants): the history's frames, counted beside it (its
-// "samples" image, x: frames held, y: consecutive still frames), and its "spread" image: the mean and
-// variance of the current frames' luma over that still run. A new history holds one frame, which may
-// start a still run.
+// "samples" image, x: frames held, y: consecutive still frames), and its "spread" image: what the
+// current frames' luma did over that still run, its lowest and highest (`range`, taa_still_range=1) or
+// its mean and variance. A new history holds one frame, which may start a still run.
 const vec2 kFirstSamples = vec2(1.0);
-vec2 firstSpread(vec3 currentY) { return vec2(currentY.x, 0.0); }
+vec2 firstSpread(vec3 currentY, bool range) { return vec2(currentY.x, range ? currentY.x : 0.0); }
 
 struct HistoryBlend {
     vec3 history;    // clipped, compressed YCoCg: the new history is mix(current, history, feedback)
@@ -60,9 +60,10 @@ struct HistoryBlend {
 // first kTaaHeldSamples frames of a history get equal shares; a still pixel (history at a texel centre,
 // inside a wider box) averages its last kTaaStillSamples frames, one whole jitter cycle, and then keeps
 // them until the box no longer holds them, or, with `spreadSigma` > 0 (taa.h kTaaSpreadSigma), until the
-// frame's luma leaves the spread the run has shown. No share above `feedbackCap` (motionFeedbackCap, or 1).
+// frame's luma leaves the spread the run has shown: its range (`range`) or kTaaSpreadSigma standard
+// deviations around its mean. No share above `feedbackCap` (motionFeedbackCap, or 1).
 HistoryBlend blendHistory(vec3 currentY, vec3 historyY, vec3 mean, vec3 sigma, vec2 historyUv, sampler2D samplesTex, sampler2D spreadTex,
-                          bool spreadKept, float feedbackCap, float spreadSigma) {
+                          bool spreadKept, float feedbackCap, float spreadSigma, bool range) {
     bool still = atTexelCentre(historyUv);
     vec3 h = clipToBox(historyY, mean, (still ? kTaaStillClipSigma : kTaaClipSigma) * sigma + vec3(1e-4));
     vec2 held = textureLod(samplesTex, historyUv, 0.0).xy;  // bilinear, as the history (a texel centre: that texel)
@@ -70,20 +71,24 @@ HistoryBlend blendHistory(vec3 currentY, vec3 historyY, vec3 mean, vec3 sigma, v
     // where they are kept (`spreadKept`: taa_still_spread=1; otherwise spreadTex is a stand-in).
     vec2 run = still && spreadKept ? texelFetch(spreadTex, nearestTexel(historyUv), 0).xy : vec2(0.0);
     // A still pixel whose frame lies within the spread its own still run has shown keeps its history
-    // whole: one jittered frame's neighbourhood may sit on one side of an edge the cycle straddles.
-    if (spreadSigma > 0.0 && still && held.y >= kTaaSpreadSamples &&
-        abs(currentY.x - run.x) <= spreadSigma * sqrt(max(run.y, 0.0)) + kTaaSpreadFloor)
-        h = historyY;
+    // whole: one jittered frame's neighbourhood may sit on one side of an edge the cycle straddles. The
+    // range holds from the run's first frame on: a line thinner than a pixel, which most of the cycle's
+    // offsets miss, lies outside a few frames' variance but inside their range.
+    bool withinRun = range ? held.y >= 1.0 && currentY.x >= run.x - kTaaSpreadFloor && currentY.x <= run.y + kTaaSpreadFloor
+                           : held.y >= kTaaSpreadSamples && abs(currentY.x - run.x) <= spreadSigma * sqrt(max(run.y, 0.0)) + kTaaSpreadFloor;
+    if (spreadSigma > 0.0 && still && withinRun) h = historyY;
     bool stillRun = still && h == historyY;  // nothing clipped
     float feedback = min(min(historyFeedback(currentY.x, h.x), held.x / (held.x + 1.0)), feedbackCap);
     if (stillRun) feedback = held.y >= kTaaStillSamples ? 1.0 : max(feedback, held.y / (held.y + 1.0));
     vec2 samples = vec2(min(held.x + 1.0, kTaaHeldSamples), stillRun ? min(held.y + 1.0, kTaaStillSamples) : 0.0);
-    vec2 spread = firstSpread(currentY);
+    vec2 spread = firstSpread(currentY, range);
     if (stillRun) {
-        // The run's luma moments, one frame more (Welford's update), until the run holds the whole
-        // jitter cycle: then they stay what the history, kept whole from then on, averaged.
+        // The run's range or luma moments (Welford's update), one frame more, until the run holds the
+        // whole jitter cycle: then they stay what the history, kept whole from then on, averaged.
         float runMean = run.x + (currentY.x - run.x) / samples.y;
-        spread = held.y >= kTaaStillSamples ? run : vec2(runMean, run.y + ((currentY.x - run.x) * (currentY.x - runMean) - run.y) / samples.y);
+        vec2 grown = range ? vec2(min(run.x, currentY.x), max(run.y, currentY.x))
+                           : vec2(runMean, run.y + ((currentY.x - run.x) * (currentY.x - runMean) - run.y) / samples.y);
+        spread = held.y >= kTaaStillSamples ? run : grown;
     }
     return HistoryBlend(h, feedback, samples, spread);
 }

@@ -17,7 +17,7 @@ constexpr WorkgroupWidths kWidths{kTaaThreadChoices, gpu::kTaaThreads, gpu::kTaa
 static_assert(kWidths.valid(gpu::kTaaTileSize * gpu::kTaaTileSize, gpu::kTaaTileSize),
               "taa_threads: every choice must give each invocation whole columns' rows of the tile, and hold the defaults");
 
-// A still run's moments (taa_color.glsl), or with taa_still_spread=0 stand-ins the shader never touches
+// A still run's range or moments (taa_color.glsl), or with taa_still_spread=0 stand-ins the shader never touches
 // (its stillSpread is 0): no history image, and no store per pixel.
 void bindSpread(graph::RenderGraph& g, ComputePass& pass, const std::optional<graph::HistoryImage>& spread, const char* standInName,
                 graph::ImageHandle unread, VkSampler nearest) {
@@ -61,6 +61,8 @@ TaaReflectionOutput TaaPass::addReflection(graph::RenderGraph& g, const FrameInp
     push.stillSpread = inputs.stillSpread ? gpu::kTaaSpreadSigma : 0.0f;
     push.motionCap = inputs.motionCap ? gpu::kTaaMotionCap : 0.0f;
     push.rimKeep = inputs.rimKeep ? 1u : 0u;
+    push.stillRange = inputs.stillRange ? 1u : 0u;
+    push.stillKeep = inputs.stillKeep ? 1u : 0u;
     const VkSampler nearest = in.samplers->nearestClamp;
     graph::ImageHandle shown, written;
     ComputePass pass(g, ctx_, "taa.reflection", reflectionPipelines_[inputs.average ? 1 : 0].get(inputs.threads));
@@ -94,6 +96,7 @@ graph::ImageHandle TaaPass::add(graph::RenderGraph& g, const FrameInputs& in, gr
     push.reflectionMotion = inputs.reflectedPath ? 1u : 0u;
     push.motionCap = inputs.motionCap ? gpu::kTaaMotionCap : 0.0f;
     push.stillSpread = inputs.stillSpread ? gpu::kTaaSpreadSigma : 0.0f;
+    push.stillRange = inputs.stillRange ? 1u : 0u;
     const VkSampler nearest = in.samplers->nearestClamp;
     graph::ImageHandle out;
     const bool split = inputs.shownReflection.has_value();

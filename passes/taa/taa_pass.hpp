@@ -21,6 +21,8 @@ struct TaaReflectionInputs {
     bool stillSpread = true;                     // taa_still_spread (taa.h kTaaSpreadSigma)
     bool motionCap = false;                      // taa_reflection_cap (taa.h kTaaMotionCap)
     bool rimKeep = true;                         // taa_rim_keep (TaaReflectionPush::rimKeep)
+    bool stillRange = true;                      // taa_still_range (TaaReflectionPush::stillRange)
+    bool stillKeep = false;                      // taa_still_keep (TaaReflectionPush::stillKeep)
     uint32_t threads = 0;                        // taa_threads: invocations per tile (taa_threads.hpp); 0: the device's default
 };
 
@@ -39,6 +41,7 @@ struct TaaInputs {
     bool average = true;  // taa_average (taa.h kTaaStillSamples)
     bool motionCap = true;  // taa_motion_cap (taa.h kTaaMotionCap)
     bool stillSpread = true;  // taa_still_spread (taa.h kTaaSpreadSigma)
+    bool stillRange = true;   // taa_still_range (TaaPush::stillRange)
     uint32_t threads = 0;     // taa_threads: invocations per tile (taa_threads.hpp); 0: the device's default
 };
 
@@ -54,7 +57,7 @@ public:
     // How many frames each history pixel holds, beside each history (taa_average).
     static constexpr const char* kSamplesName = "taa.color.samples";
     static constexpr const char* kReflectionSamplesName = "taa.reflection.samples";
-    // A still run's luma moments, beside each (taa_average; read with taa_still_spread).
+    // A still run's luma range or moments, beside each (taa_average; read with taa_still_spread).
     static constexpr const char* kSpreadName = "taa.color.spread";
     static constexpr const char* kReflectionSpreadName = "taa.reflection.spread";
     static constexpr const char* kHistoryNames[] = {kHistoryName,         kReflectionHistoryName, kSamplesName,

@@ -170,7 +170,7 @@ void resolvePixel(ivec2 pix) {
     vec3 resolved = currentY;
 #ifdef PPR_TAA_AVERAGE
     vec2 samples = kFirstSamples;  // what the new history holds (taa_color.glsl)
-    vec2 spread = firstSpread(currentY);
+    vec2 spread = firstSpread(currentY, pc.stillRange != 0u);
 #endif
     if (pc.historyValid != 0u && onScreen) {
         // Colour through the bicubic filter (a bilinear one blurs a little more every frame); the stored
@@ -186,10 +186,18 @@ void resolvePixel(ivec2 pix) {
         float nearest = (range ? min(expectedW, shortestPath * perPath) : expectedW) * (1.0 - kTaaVirtualDepthTolerance);
         float farthest = (range ? max(expectedW, longestPath * perPath) : expectedW) * (1.0 + kTaaVirtualDepthTolerance);
         bool disoccluded = expectedW > 0.0 && history.a > kKnownDepth && (history.a < nearest || history.a > farthest);
+#ifdef PPR_TAA_AVERAGE
+        // A still run (the history at a texel centre: nothing moved there): only the jitter changed what
+        // this pixel reflects, as on a reflector's rim, where one phase of the cycle sees past an edge
+        // that the others do not. Every phase is its history; the colour tests judge it.
+        // (taa_still_keep=1; read only where the depth rejected the history.)
+        if (disoccluded && pc.stillKeep != 0u && atTexelCentre(historyUv) && texelFetch(historySamples, nearestTexel(historyUv), 0).y >= 1.0)
+            disoccluded = false;
+#endif
         if (hadReflection && !disoccluded) {
 #ifdef PPR_TAA_AVERAGE
             HistoryBlend blend = blendHistory(currentY, toYCoCg(compress(history.rgb)), mean, sigma, historyUv, historySamples, historySpread,
-                                              pc.stillSpread > 0.0, motionFeedbackCap(historyUv, pc.motionCap), stillSpread);
+                                              pc.stillSpread > 0.0, motionFeedbackCap(historyUv, pc.motionCap), stillSpread, pc.stillRange != 0u);
             vec3 h = blend.history;
             float feedback = blend.feedback;
             samples = blend.samples;

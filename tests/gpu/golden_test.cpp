@@ -9,7 +9,10 @@
 //                               facing=0 (issue 19's "holes=slides reproduces today's images";
 //                               ce8b37b's defaults render as e32db7c's, fallback_env being 0);
 //   taa_before_average.json     PPR with taa=1 after 8 frames, recorded by the build of be3e1c7, the
-//                               last before the histories counted their frames (taa_average=0).
+//                               last before the histories counted their frames (taa_average=0);
+//   taa_before_still_range.json PPR with taa=1 after 24 frames (past a whole jitter cycle), recorded by
+//                               the build of fc97632, the last before a still run's range and a still
+//                               reflection kept whatever its path (taa_still_range=0, taa_still_keep=0).
 // `current` holds the settings the current build adds to keep the old behaviour (options the
 // recording build did not have; taa=0, the default, is spelled out: it must render today's images;
 // fallback=ssr: PPR's holes unmarched, as before fallback=ssr_holes became the default;
@@ -43,6 +46,7 @@ const Golden kGoldens[] = {
     {"ppr_before_normalmaps.json", "--set normalmap=off --set fallback_env=0", "--set holes=slides --set facing=0 --set splat=0 --set taa=0 --set fallback=ssr --set normal_refine=0"},
     {"ppr_before_hole_rule.json", "", "--set holes=slides --set facing=0 --set splat=0 --set taa=0 --set fallback=ssr --set normal_refine=0"},
     {"taa_before_average.json", "--set taa=1 --frames 8", "--set taa_average=0 --set normal_refine=walk"},
+    {"taa_before_still_range.json", "--set taa=1 --frames 24", "--set taa_still_range=0 --set taa_still_keep=0"},
 };
 constexpr const char* kSize = "320x180";
 
