@@ -27,14 +27,18 @@ sleep 8  # the panel's frame times settle
 shot viewer
 note "viewer.png"
 
-# The Reflectors window's collapse arrow (top right), then a click on the large puddle selects it.
-xdotool mousemove --sync $((WX + 921)) $((WY + 17)) click 1
-sleep 3
-xdotool mousemove --sync $((WX + 560)) $((WY + 520)) click 1
+# ImGui 1.86 reads the mouse at each frame's start: a click is held for longer than a frame takes on
+# a loaded machine, and each step is clicked again only if the picture, seconds later, lacks it.
+click_held() { xdotool mousemove --sync "$1" "$2" mousedown 1; sleep 1.5; xdotool mouseup 1; sleep 4; }
+# The Reflectors window (top right) open: its dark panel covers the floor at (1200, 480).
+expanded() { shot editor && awk "BEGIN{exit !($(convert "$WORK/editor.png" -format '%[fx:p{1200,480}.intensity]' info:) < 0.15)}"; }
+open_reflectors() { expanded || { click_held $((WX + 921)) $((WY + 17)); expanded; }; }
+wait_for "the Reflectors window open" open_reflectors
 selected() {  # the selection outline (editor_ui.cpp's yellow) is on screen
     shot editor && [ "$(convert "$WORK/editor.png" -fill black +opaque 'rgb(255,200,40)' -fill white -opaque 'rgb(255,200,40)' -format '%[fx:mean*w*h]' info:)" != 0 ]
 }
-wait_for "the puddle selected" selected
+select_puddle() { selected || { click_held $((WX + 560)) $((WY + 520)); selected; }; }  # a click on the large puddle
+wait_for "the puddle selected" select_puddle
 xdotool mousemove --sync $((WX + 640)) $((WY + 700))
 sleep 4
 shot editor
