@@ -244,11 +244,11 @@ const std::vector<SettingDecl>& settingDecls() {
                "taa=1, taa_still_spread=1: the spread is the luma range the run has shown, from its first frame on, so a line "
                "thinner than a pixel, which most of the jitter cycle misses, keeps its average too (0: within 2.5 standard "
                "deviations of the run's mean, from its fourth frame; switching restarts the histories)"),
-        toggle("taa_still_keep", "taa", [](FrameSettings& s) -> bool& { return s.taa.stillKeep; }, false,
+        toggle("taa_still_keep", "taa", [](FrameSettings& s) -> bool& { return s.taa.stillKeep; }, true,
                "taa=1, taa_average=1, reproject=virtual: a still pixel's reflection history is kept whatever depth its reflected "
-               "path has this frame: on a reflector's rim the jitter alone changes what the pixel reflects, and every phase is "
-               "its history; a still view's rims stop flickering, but where a moving object's reflection has just passed, its "
-               "trail is kept too (0, the default: a path depth outside the neighbourhood's rejects the history)"),
+               "path has this frame, unless a moving object is reflected there or beside: on a reflector's rim the jitter alone "
+               "changes what the pixel reflects, and every phase is its history (0: a path depth outside the neighbourhood's "
+               "rejects the history)"),
         widthSetting("taa_threads", "taa", [](FrameSettings& s) -> uint32_t& { return s.taa.threads; }, passes::kTaaThreadChoices,
                      "taa=1: invocations per 16x16 tile in both resolves, each a column of 256/threads pixels (auto: 16 on a CPU "
                      "device, where a workgroup costs per invocation; 256 on a GPU); the same images with any"),

@@ -41,7 +41,8 @@ PPR_CONST(float, kTaaMotionCap, 0.3f)
 // taa_still_range=1 (with taa_still_spread=1): the test is the run's luma range instead, from its first
 // frame on (plus the same floor): a line thinner than a pixel lies outside a few frames' variance but
 // inside their range. taa_still_keep=1: a still pixel's reflection history is not rejected as another
-// surface's when only the jitter changed the reflected path (a reflector's rim).
+// surface's when only the jitter changed the reflected path (a reflector's rim), unless a moving draw is
+// reflected there or beside.
 PPR_CONST(float, kTaaSpreadSamples, 4.0f)
 PPR_CONST(float, kTaaSpreadSigma, 2.5f)
 PPR_CONST(float, kTaaSpreadFloor, 0.004f)

@@ -22,7 +22,7 @@ struct TaaReflectionInputs {
     bool motionCap = false;                      // taa_reflection_cap (taa.h kTaaMotionCap)
     bool rimKeep = true;                         // taa_rim_keep (TaaReflectionPush::rimKeep)
     bool stillRange = true;                      // taa_still_range (TaaReflectionPush::stillRange)
-    bool stillKeep = false;                      // taa_still_keep (TaaReflectionPush::stillKeep)
+    bool stillKeep = true;                       // taa_still_keep (TaaReflectionPush::stillKeep)
     uint32_t threads = 0;                        // taa_threads: invocations per tile (taa_threads.hpp); 0: the device's default
 };
 

@@ -189,9 +189,10 @@ void resolvePixel(ivec2 pix) {
 #ifdef PPR_TAA_AVERAGE
         // A still run (the history at a texel centre: nothing moved there): only the jitter changed what
         // this pixel reflects, as on a reflector's rim, where one phase of the cycle sees past an edge
-        // that the others do not. Every phase is its history; the colour tests judge it.
-        // (taa_still_keep=1; read only where the depth rejected the history.)
-        if (disoccluded && pc.stillKeep != 0u && atTexelCentre(historyUv) && texelFetch(historySamples, nearestTexel(historyUv), 0).y >= 1.0)
+        // that the others do not. Every phase is its history; the colour tests judge it. Not beside a
+        // moving draw's reflection: there the depth is what tells its trail (taa_still_keep=1; the
+        // counts are read only where the depth rejected the history).
+        if (disoccluded && pc.stillKeep != 0u && !movingNearby && atTexelCentre(historyUv) && texelFetch(historySamples, nearestTexel(historyUv), 0).y >= 1.0)
             disoccluded = false;
 #endif
         if (hadReflection && !disoccluded) {

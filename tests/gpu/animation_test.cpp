@@ -156,8 +156,8 @@ TEST(Animation, ReflectionHistoryFollowsTheMovingObject) {
     // The least gain over `surface` (dB). The exact references reflect every point of the ball; the
     // screen-space techniques only the part the camera sees, so they gain less. Measured on lavapipe
     // with the slot, taa_split=1 and taa_average=1: planar +3.9, raytraced +3.9, ssr-hiz +1.7, ppr 0.0
-    // (with taa_still_range=1, 2026-12-06: +3.9, +3.9, +1.3, -0.02; taa_still_keep=1 would take ppr to
-    // -0.2 and ssr-hiz to +1.0: docs/temporal.md)
+    // (with taa_still_range=1 and taa_still_keep=1, 2026-12-06: +3.9, +3.9, +1.4, 0.00; a keep that
+    // ignored the moving draw's reflection beside took ppr to -0.2: docs/temporal.md)
     // (taa_average=0: planar +4.1, raytraced +4.1, ssr-hiz +1.1, ppr +0.04; with
     // taa_split=0 +2.4, +2.4, +0.9, +0.3: there the frame's TAA smeared `surface`'s reflection a second
     // time, and PPR, which reflects only the ball's visible side, gains least); without the slot +0.4,
