@@ -5,7 +5,7 @@
 # and with what they were made.
 #   scripts/docs-images.sh [--ppr EXE] [--out DIR] [--only NAME[,NAME...]] [--no-ui]
 # --out       where the images go (default docs/images)
-# --only      remake only these (names below, without .png)
+# --only      remake only these (the names in `names` below, without .png; an unknown one is an error)
 # --no-ui     skip viewer.png and editor.png (they need Xvfb, xdotool and xwd, as the UI tests do)
 # The renders are deterministic, but for the viewer's two, whose panel shows frame times: on an
 # unchanged build the others come out the same byte for byte, so `git status docs/images` after a
@@ -26,6 +26,10 @@ while [ $# -gt 0 ]; do
   esac
 done
 [ -x "$ppr" ] || { echo "docs-images: no ppr at $ppr (build first: scripts/build.sh)" >&2; exit 1; }
+names=",overview,cameras,contact_puddles,contact_ssr_grazing,glass_contact,glass_atlas,debug_views,normalmap_contact,frame_graph,viewer,editor,"
+for n in ${only//,/ }; do
+  [[ "$names" == *",$n,"* ]] || { echo "docs-images: --only: no picture named '$n' (names: ${names:1:-1})" >&2; exit 2; }
+done
 mkdir -p "$out"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
