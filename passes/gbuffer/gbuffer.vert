@@ -15,7 +15,6 @@ layout(location = 4) in vec4 inColor;  // COLOR_0, white without
 layout(location = 0) out vec3 vNormal;
 layout(location = 1) out vec4 vTangent;
 layout(location = 2) out vec2 vUv;
-layout(location = 3) flat out uint vDraw;
 layout(location = 4) out vec4 vColor;
 
 void main() {
@@ -25,6 +24,5 @@ void main() {
     vTangent = vec4(mat3(d.world) * inTangent.xyz, inTangent.w);
     vUv = inUv;
     vColor = inColor;
-    vDraw = pc.drawIndex;
     gl_Position = frame.viewProj * world;
 }

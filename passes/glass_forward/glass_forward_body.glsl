@@ -28,21 +28,20 @@ layout(push_constant, scalar) uniform Push { GlassForwardPush pc; };
 layout(location = 0) in vec3 vNormal;
 layout(location = 1) in vec4 vTangent;
 layout(location = 2) in vec2 vUv;
-layout(location = 3) flat in uint vDraw;
 layout(location = 4) in vec4 vColor;
 
 layout(location = 0, index = 0) out vec4 outAdd;
 layout(location = 0, index = 1) out vec4 outFilter;
 
 void main() {
-    DrawData d = draws[vDraw];
+    DrawData d = draws[pc.drawIndex];
     MaterialData m = materials[d.material];
-    vec4 base = m.baseColor * (m.baseColorTex == kNoTexture ? vec4(1.0) : texture(textures[nonuniformEXT(m.baseColorTex)], materialUv(m, vUv)));
+    vec4 base = m.baseColor * (m.baseColorTex == kNoTexture ? vec4(1.0) : texture(textures[m.baseColorTex], materialUv(m, vUv)));
     if ((d.flags & kDrawVertexColors) != 0u) base *= vColor;
     vec3 world = worldFromDepth(gl_FragCoord.xy * frame.invScreenSize, gl_FragCoord.z);
     vec3 v = normalize(frame.cameraPos.xyz - world);
     vec3 n = normalize(vNormal);
-    uint reflectorId = drawReflectors[vDraw];
+    uint reflectorId = drawReflectors[pc.drawIndex];
     if (reflectorId == 0u) {
         // A draw holding many panes: the glass reflector whose rectangle this point lies on, the one
         // facing the viewer first (a pane fitted on both faces has one reflector per face); one seen
@@ -73,7 +72,7 @@ void main() {
 #endif
     vec3 tint = mix(vec3(1.0), base.rgb, base.a);
     // An emissive pane (glTF emissive on a BLEND material) adds its light over whatever it filters.
-    vec3 emitted = m.emissive * (m.emissiveTex == kNoTexture ? vec3(1.0) : texture(textures[nonuniformEXT(m.emissiveTex)], materialUv(m, vUv)).rgb);
+    vec3 emitted = m.emissive * (m.emissiveTex == kNoTexture ? vec3(1.0) : texture(textures[m.emissiveTex], materialUv(m, vUv)).rgb);
     outAdd = vec4(weight * reflection + emitted, 0.0);
     outFilter = vec4((1.0 - weight) * tint, 1.0);
 }

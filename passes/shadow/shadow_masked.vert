@@ -14,12 +14,10 @@ layout(location = 3) in vec2 inUv;
 layout(location = 4) in vec4 inColor;
 
 layout(location = 0) out vec2 vUv;
-layout(location = 1) flat out uint vDraw;
 layout(location = 2) out float vAlpha;  // COLOR_0's alpha
 
 void main() {
     vUv = inUv;
     vAlpha = inColor.a;
-    vDraw = pc.drawIndex;
     gl_Position = frame.lightViewProj * (draws[pc.drawIndex].world * vec4(inPosition, 1.0));
 }
