@@ -41,6 +41,9 @@ struct Options {
     std::optional<float> fitMaxRoughness;     // --max-roughness R
     float fitMinArea = 0.05f;                 // --min-area A (m²)
     bool fitAppend = false;                   // --append: keep the reflectors already in the output file
+    // view: the frame is rendered at this fraction of the window's size and upscaled into it
+    // (app/render/render_scale.hpp); 1 = the window's own resolution.
+    float renderScale = 1.0f;
 };
 
 // A technique with its own settings: "ppr@normalmap=off,holes=0" (compare and bench rows, capture).
@@ -54,6 +57,7 @@ TechniqueVariant parseTechniqueVariant(const std::string& text);
 // `ppr bench --sweep` names.
 const std::vector<std::string>& benchSweepNames();
 
+constexpr float kMinRenderScale = 0.1f;  // --render-scale's least value (a tenth of each side)
 constexpr uint32_t kMinSize = 1;  // a 1-pixel-wide frame is valid (the validation sweep renders 1x4096)
 constexpr uint32_t kMaxSize = 8192;
 constexpr uint32_t kMaxFrames = 100000;

@@ -1,8 +1,10 @@
 #include "render/headless.hpp"
 
+
 #include "cli/cli.hpp"
 #include "metrics/median.hpp"
 #include "render/memory_log.hpp"
+#include "render/render_scale.hpp"
 #include "scene/glass_atlas.hpp"
 #include "techniques/technique_table.hpp"
 
@@ -11,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 
 namespace ppr::app {
 
@@ -108,6 +111,7 @@ VkCommandBuffer HeadlessRenderer::beginSlot(uint32_t slot) {
 CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExtent2D extent, uint32_t frames, bool dumpGraph,
                                         bool readReflection, bool newShot) {
     ensureTargets(extent);
+    if (readReflection && renderScale_ != 1.0f) throw std::logic_error("capture: the reflection is read back at the frame's size; render scale 1 only");
     frames = std::max(frames, 1u);
     CaptureResult result;
     result.frames = frames;
@@ -148,7 +152,7 @@ CaptureResult HeadlessRenderer::capture(const scene::CameraPose& camera, VkExten
         VkCommandBuffer cmd = beginSlot(slot);
         FrameRequest req;
         req.camera = camera;
-        req.extent = extent;
+        req.extent = scaledExtent(extent, renderScale_);  // the tonemap pass upscales it into the target
         req.technique = technique_;
         req.reference = reference_;
         req.settings = settings_.values();

@@ -73,6 +73,10 @@ public:
     void setSceneTime(std::optional<double> seconds) { sceneTime_ = seconds; }
     // The reference A/B compares with (default planar).
     void setReference(const std::string& reference) { reference_ = reference; }
+    // Frames rendered at this fraction of the extent and upscaled into the extent-sized final image,
+    // as the viewer's render scale does (tests; render/render_scale.hpp). Captures that also read the
+    // reflection back need 1.
+    void setRenderScale(float scale) { renderScale_ = scale; }
     // The viewer's A/B view for the following captures (tests).
     void setAb(AbView view, float split) {
         ab_ = view;
@@ -110,6 +114,7 @@ private:
     float abSplit_ = 0.5f;
     std::optional<glm::vec2> jitter_;  // captureSupersampled's current sample
     std::optional<double> sceneTime_;
+    float renderScale_ = 1.0f;
     void ensureGlassReadback(uint32_t atlasSize);
 };
 

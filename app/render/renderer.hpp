@@ -27,7 +27,9 @@ struct FrameRequest {
     std::string technique = "none";  // a techniqueTable() name
     std::string reference = "planar";  // the ground truth taps compare with (a reference row of the table)
     FrameSettings settings = Settings().values();
-    graph::ExternalImage* target = nullptr;  // tonemapped output (swapchain image) or null → transient
+    // Tonemapped output (swapchain image) or null → transient. A target larger than `extent` (the
+    // viewer's render scale) is filled by upscaling the frame.
+    graph::ExternalImage* target = nullptr;
     std::vector<FrameTap> taps;
     bool dumpGraph = false;  // keep the Graphviz text of this frame's graph
     // TAA: a camera cut (a jump, not motion) drops the history. `jitter` overrides the sub-pixel

@@ -18,6 +18,7 @@
 #include "render/headless.hpp"
 #include "render/memory_log.hpp"
 #include "techniques/technique_table.hpp"
+#include "render/render_scale.hpp"
 #include "viewer/viewer_soak.hpp"
 #include "viewer/viewer_ui.hpp"
 #include "vk/swapchain.hpp"
@@ -196,6 +197,7 @@ private:
     bool animate_ = true;
     double sceneClock_ = 0.0;  // seconds on the animation's clock
     bool vsync_ = true;
+    float renderScale_ = 1.0f;  // the frame's size over the window's (--render-scale, the panel)
     bool swapchainDirty_ = false;
     bool looking_ = false;
     double lastCursorX_ = 0.0, lastCursorY_ = 0.0;
@@ -219,7 +221,8 @@ private:
     uint64_t frames_ = 0;
 };
 
-Viewer::Viewer(const Options& o, vk::Context& ctx, const scene::Scene& scene) : options_(o), ctx_(ctx), scene_(scene) {
+Viewer::Viewer(const Options& o, vk::Context& ctx, const scene::Scene& scene)
+    : options_(o), ctx_(ctx), scene_(scene), renderScale_(o.renderScale) {
     cameras_ = resolveCameras(scene, "");
     const ResolvedCamera start = resolveCameras(scene, o.camera).front();
     camera_.pose = start.pose;
@@ -360,6 +363,8 @@ void Viewer::buildUi() {
     PanelModel m;
     m.device = &ctx_.info();
     m.extent = swapchain_->extent();
+    m.renderExtent = scaledExtent(m.extent, renderScale_);
+    m.renderScale = &renderScale_;
     m.frameMs = average(frameMs_);
     m.cpuMs = average(cpuMs_);
     m.cameras = &cameras_;
@@ -447,7 +452,7 @@ bool Viewer::renderFrame(uint32_t slot) {
 
     FrameRequest req;
     req.camera = camera_.pose;
-    req.extent = extent;
+    req.extent = scaledExtent(extent, renderScale_);  // the tonemap pass upscales it into the window's image
     req.target = &target;
     // Hold-to-compare: while B is held the frame shows the reference.
     const bool holdCompare = !imgui_->wantsKeyboard() && glfwGetKey(window_.handle, GLFW_KEY_B) == GLFW_PRESS;
@@ -457,7 +462,7 @@ bool Viewer::renderFrame(uint32_t slot) {
     req.cameraCut = std::exchange(cameraCut_, false);
     if (!scene_.animation.empty()) req.sceneTime = sceneClock_;
     if (pendingClick_) {  // the G-buffer under the click, read back once this slot's fence signals
-        req.taps.push_back(pickTap_->tap(pickPixel_, &pickImport_[slot]));
+        req.taps.push_back(pickTap_->tap(renderPixelOf(pickPixel_, extent, req.extent), &pickImport_[slot]));
         pickIssued_[slot] = true;
     }
     abTaps_->attach(req.taps, ab_, abSplit_);
@@ -533,7 +538,7 @@ void Viewer::run(uint64_t maxFrames, uint64_t captureAt) {
     while (!glfwWindowShouldClose(w) && !g_quit) {
         if (maxFrames && frames_ >= maxFrames) break;
         glfwPollEvents();
-        if (soak_ && soak_->advance(frames_, w, settings_, technique_))
+        if (soak_ && soak_->advance(frames_, w, settings_, technique_, renderScale_))
             std::printf("%s\n", formatMemorySample(sampleMemory(ctx_, frames_)).c_str()), std::fflush(stdout);
 
         int fbw = 0, fbh = 0;

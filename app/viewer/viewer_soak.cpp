@@ -1,5 +1,6 @@
 #include "viewer/viewer_soak.hpp"
 
+#include "render/render_scale.hpp"
 #include "viewer/viewer_ui.hpp"
 
 #include <GLFW/glfw3.h>
@@ -23,10 +24,11 @@ std::string randomValue(const SettingDecl& d, std::mt19937& rng) {
 
 }  // namespace
 
-bool ViewerSoak::advance(uint64_t frame, GLFWwindow* window, Settings& settings, std::string& technique) {
+bool ViewerSoak::advance(uint64_t frame, GLFWwindow* window, Settings& settings, std::string& technique, float& renderScale) {
     if (homeWidth_ == 0) {
         glfwGetWindowSize(window, &homeWidth_, &homeHeight_);
         homeTechnique_ = technique;
+        homeRenderScale_ = renderScale;
     }
     if (iconifiedFor_ > 0 && --iconifiedFor_ == 0) glfwRestoreWindow(window);
     if (frame == lastFrame_) return false;  // act once per presented frame (the loop also spins while minimised)
@@ -44,6 +46,7 @@ bool ViewerSoak::advance(uint64_t frame, GLFWwindow* window, Settings& settings,
         glfwSetWindowSize(window, homeWidth_, homeHeight_);
         settings = Settings();
         technique = homeTechnique_;
+        renderScale = homeRenderScale_;
     }
     if (phase >= kCycle - kHome) return phase == kCycle - 1;
     if (frame % 40 == 39) technique = nextTechnique(technique);
@@ -52,6 +55,8 @@ bool ViewerSoak::advance(uint64_t frame, GLFWwindow* window, Settings& settings,
         const SettingDecl& d = decls[std::uniform_int_distribution<size_t>(0, decls.size() - 1)(rng_)];
         settings.set(d.key, randomValue(d, rng_));
     }
+    if (frame % 61 == 60)  // the graph's images follow the frame's size, not the window's
+        renderScale = kRenderScaleChoices[std::uniform_int_distribution<size_t>(0, kRenderScaleChoices.size() - 1)(rng_)];
     if (frame % 97 == 96) {  // from one pixel to 960x540
         const int w = std::uniform_int_distribution<int>(1, 960)(rng_), h = std::uniform_int_distribution<int>(1, 540)(rng_);
         glfwSetWindowSize(window, w, h);

@@ -1,6 +1,7 @@
 #include "viewer/viewer_ui.hpp"
 
 #include "settings/debug_views.hpp"
+#include "render/render_scale.hpp"
 
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
@@ -217,7 +218,10 @@ PanelActions drawPanel(PanelModel& m) {
         ImGui::TextUnformatted(m.device->name.c_str());
         ImGui::Text("%s, Vulkan %s", m.device->type.c_str(), m.device->apiVersionString.c_str());
     }
-    ImGui::Text("%u x %u", m.extent.width, m.extent.height);
+    if (m.renderExtent.width == m.extent.width && m.renderExtent.height == m.extent.height)
+        ImGui::Text("%u x %u", m.extent.width, m.extent.height);
+    else
+        ImGui::Text("%u x %u, rendered at %u x %u", m.extent.width, m.extent.height, m.renderExtent.width, m.renderExtent.height);
     ImGui::Text("frame %.2f ms (%.1f FPS)", m.frameMs, m.frameMs > 0.0 ? 1000.0 / m.frameMs : 0.0);
     ImGui::Text("CPU %.2f ms (UI, record, submit, present)", m.cpuMs);
     ImGui::TextDisabled("F2: debug view  F3: technique  F12: capture");
@@ -237,6 +241,20 @@ PanelActions drawPanel(PanelModel& m) {
         }
         ImGui::Text("camera speed %.2f m/s", m.cameraSpeed);
         if (ImGui::Checkbox("vsync", &m.vsync)) a.vsyncChanged = true;
+        if (m.renderScale) {
+            char current[16];
+            std::snprintf(current, sizeof current, "%.2f", *m.renderScale);
+            if (ImGui::BeginCombo("render scale", current)) {
+                for (float s : kRenderScaleChoices) {
+                    char label[16];
+                    std::snprintf(label, sizeof label, "%.2f", s);
+                    if (ImGui::Selectable(label, s == *m.renderScale)) *m.renderScale = s;
+                }
+                ImGui::EndCombo();
+            }
+            helpTooltip("the frame is rendered at this fraction of the window's size and upscaled (bilinear) into it; "
+                        "below 1 a CPU device stays interactive (--render-scale S takes any value in 0.1..1)");
+        }
         if (m.animate) {
             ImGui::Checkbox("animate", m.animate);
             ImGui::SameLine();

@@ -51,7 +51,9 @@ private:
 // What the panel shows and edits.
 struct PanelModel {
     const vk::DeviceInfo* device = nullptr;
-    VkExtent2D extent{};
+    VkExtent2D extent{};        // the window's
+    VkExtent2D renderExtent{};  // the frame's (the window's times the render scale)
+    float* renderScale = nullptr;  // edited in place (app/render/render_scale.hpp)
     double frameMs = 0.0;  // wall time per frame (average over the history)
     double cpuMs = 0.0;    // CPU time spent building + recording + submitting a frame
     const std::vector<ResolvedCamera>* cameras = nullptr;

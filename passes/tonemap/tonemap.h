@@ -5,6 +5,13 @@
 #include "shader/shared.h"
 
 PPR_BEGIN
+// The pass's push constants. A target larger than the frame (the viewer's --render-scale) is filled
+// by bilinear upscaling of the HDR image; one of the frame's size reads its texels as they are.
+struct TonemapPush {
+    vec2 invTargetSize;  // 1 / target extent (upscale only)
+    uint upscale;        // 1: the target is larger than the HDR image
+    uint pad;
+};
 // Narkowicz's ACES filmic fit: cheap, neutral enough for comparing techniques.
 PPR_INLINE vec3 acesFilmic(vec3 x) {
     return clamp((x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f), 0.0f, 1.0f);
@@ -23,5 +30,6 @@ PPR_INLINE vec3 radianceFromDisplay(vec3 display, float exposure) {
     return (-b + sqrt(b * b - 4.0f * a * c)) / (2.0f * a) / exposure;
 }
 PPR_END
+PPR_SIZE_CHECK(TonemapPush, 16);
 
 #endif

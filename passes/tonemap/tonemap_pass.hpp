@@ -1,6 +1,7 @@
 #pragma once
 // HDR → display: exposure, ACES fit, sRGB encoding, into an 8-bit UNORM target (capture image or
-// swapchain image). One pipeline per target format, created on first use of that format.
+// swapchain image). One pipeline per target format, created on first use of that format. A target
+// larger than the HDR image (the viewer's render scale) is filled by bilinear upscaling.
 #include "common/frame_inputs.hpp"
 #include "graph/graph.hpp"
 

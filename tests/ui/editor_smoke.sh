@@ -6,9 +6,12 @@
 # leaves a valid file.
 #
 # usage: editor_smoke.sh PPR_BINARY WORK_DIR
+# PPR_UI_VIEW_ARGS: more viewer options (ui.editor_render_scale passes --render-scale 0.5: the click
+# must pick the render pixel under the cursor, not the window pixel).
 set -uo pipefail
 
-TEST=ui.editor_snap_move_save
+TEST=${PPR_UI_TEST_NAME:-ui.editor_snap_move_save}
+read -r -a VIEW_ARGS <<<"${PPR_UI_VIEW_ARGS:-}"
 # shellcheck source=ui_lib.sh
 source "$(dirname "$0")/ui_lib.sh" "$@"
 
@@ -20,7 +23,7 @@ centre() { python3 -c "import json,sys; r=[r for r in json.load(open(sys.argv[1]
 before=$(count "$FILE")
 
 start_viewer() {
-    "$PPR" view --size 640x360 --camera puddles --reflectors "$FILE" --validation --out "$WORK/out" >"$WORK/viewer.log" 2>&1 &
+    "$PPR" view --size 640x360 --camera puddles --reflectors "$FILE" --validation --out "$WORK/out" "${VIEW_ARGS[@]}" >"$WORK/viewer.log" 2>&1 &
     VIEWER_PID=$!
     find_window
     xdotool windowfocus "$WID" 2>/dev/null

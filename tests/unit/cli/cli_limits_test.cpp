@@ -51,6 +51,17 @@ TEST(CliLimits, BenchRounds) {
     EXPECT_EQ(errorOf({"ppr", "capture", "--rounds", "2"}), "--rounds 2: only bench measures in rounds");
 }
 
+TEST(CliLimits, RenderScaleIsTheViewersAlone) {
+    EXPECT_FLOAT_EQ(parse({"ppr", "view"}).renderScale, 1.0f);
+    EXPECT_FLOAT_EQ(parse({"ppr", "view", "--render-scale", "0.5"}).renderScale, 0.5f);
+    EXPECT_FLOAT_EQ(parse({"ppr", "--render-scale", "0.1"}).renderScale, 0.1f);  // no command: the viewer with a display
+    EXPECT_EQ(errorOf({"ppr", "view", "--render-scale", "0.05"}), "--render-scale 0.05: out of range (0.1..1)");
+    EXPECT_EQ(errorOf({"ppr", "view", "--render-scale", "2"}), "--render-scale 2: out of range (0.1..1)");
+    EXPECT_EQ(errorOf({"ppr", "view", "--render-scale", "nan"}), "--render-scale nan: expected a number");
+    EXPECT_EQ(errorOf({"ppr", "capture", "--render-scale", "0.5"}),
+              "--render-scale: only the viewer renders below its window's size (capture, compare and bench render at --size)");
+}
+
 TEST(CliLimits, FitOptions) {
     const ppr::app::Options o =
         parse({"ppr", "fit", "--scene", "s.gltf", "--materials", "floor|glass", "--max-roughness", "0.3", "--min-area", "2", "--out", "r.json"});
