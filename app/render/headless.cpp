@@ -1,6 +1,5 @@
 #include "render/headless.hpp"
 
-
 #include "cli/cli.hpp"
 #include "metrics/median.hpp"
 #include "render/memory_log.hpp"

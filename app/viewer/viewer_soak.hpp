@@ -2,10 +2,11 @@
 // PPR_VIEWER_SOAK=1: the viewer drives itself as a restless user would, for the soak
 // (scripts/soak.sh, docs/reliability.md): it cycles the techniques, sets every declared setting to
 // random values from its choices or range (debug views included), picks render scales, resizes the
-// window, and iconifies and restores it. Deterministic (a fixed seed) so a soak that finds a problem can be replayed.
-// Every kCycle frames it comes home for kHome frames (the first technique, default settings, the
-// initial window size) and asks for a memory sample at the end: the soak compares those samples, taken
-// in the same state, since the graph's transient pool rightly follows the window size and settings.
+// window, and iconifies and restores it. Deterministic (a fixed seed) so a soak that finds a problem
+// can be replayed. Every kCycle frames it comes home for kHome frames (the first technique, default
+// settings, the initial window size and render scale) and asks for a memory sample at the end: the
+// soak compares those samples, taken in the same state, since the graph's transient pool rightly
+// follows the frame's size and settings.
 // It starts with a warm-up: every choice of every declared setting once, one a frame, with the first
 // technique, so that what is made once when a value is first asked for (a workgroup width's
 // pipeline) is made before the first sample, as the headless soak's warm-up frames make theirs.

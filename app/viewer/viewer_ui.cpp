@@ -1,7 +1,7 @@
 #include "viewer/viewer_ui.hpp"
 
-#include "settings/debug_views.hpp"
 #include "render/render_scale.hpp"
+#include "settings/debug_views.hpp"
 
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
@@ -288,7 +288,7 @@ PanelActions drawPanel(PanelModel& m) {
         if (m.technique == "ppr" && m.pprStats) {
             // The counts behind tiles / indirect: what the classification found and what culling kept.
             const gpu::PprFrameStats& s = *m.pprStats;
-            const uint32_t tiles = gpu::pprTilesCovering(m.extent.width) * gpu::pprTilesCovering(m.extent.height);
+            const uint32_t tiles = gpu::pprTilesCovering(m.renderExtent.width) * gpu::pprTilesCovering(m.renderExtent.height);  // the frame's tiles
             ImGui::Text("reflectors %u (PPR projects %u; on screen %u, reflecting %u)", m.reflectors, m.reflectorsProjected,
                         s.reflectorsOnScreen, s.reflectorsReflecting);
             ImGui::Text("tiles %u: reflective %u, other reflective %u", tiles, s.dispatch[gpu::kTileClassPlanar].x,

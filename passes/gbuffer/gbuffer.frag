@@ -27,7 +27,7 @@ layout(location = 4) out vec4 outEmissive;
 
 // Each draw is its own vkCmdDrawIndexed with its index pushed, so the material and its texture
 // indices are uniform across a draw: no nonuniformEXT, and no varying for the index (the shader
-// compiler then reads them once; on lavapipe the texture lookups cost 15 % less).
+// compiler then reads them once; on lavapipe the pass costs 0.85-0.91 of what it did).
 vec4 sampleOr(uint tex, vec2 uv, vec4 fallback) {
     return tex == kNoTexture ? fallback : texture(textures[tex], uv);
 }
