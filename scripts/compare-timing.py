@@ -12,7 +12,9 @@ pictures; this shows what it costs.
 usage: compare-timing.py OLD_PPR NEW_PPR [--rounds N] [--pass P[+Q...]] [--frames F]
                          [--new-set key=value]... [--new-args "OPTIONS"] [-- capture options...]
   --pass      the passes summed (default: the technique's total, report.json's technique_gpu_ms);
-              e.g. ppr.project+ppr.reach
+              e.g. ppr.project+ppr.reach; a name ending in ? counts 0 where the frame has no such
+              pass (a mode that adds one: --pass gbuffer+gbuffer.prepass? --new-set depth_prepass=0);
+              total: the whole frame (report.json's total_gpu_ms)
   --new-set   a setting for the new side only (the same build twice: a mode on against off)
   --new-args  capture options for the new side only, after the shared ones (the last of an option
               wins): e.g. --new-args="--scene stress:1024" -- --scene stress:1 times 1 024
@@ -40,10 +42,13 @@ def measure(exe, out, passes, frames, capture_args):
         report = json.load(f)
     if not passes:
         return report["technique_gpu_ms"]
-    missing = [p for p in passes if p not in report["passes"]]
+    if passes == ["total"]:
+        return report["total_gpu_ms"]
+    missing = [p for p in passes if not p.endswith("?") and p not in report["passes"]]
     if missing:
         sys.exit("compare-timing: no pass %s in this frame (passes: %s)" % (", ".join(missing), ", ".join(sorted(report["passes"]))))
-    return sum(report["passes"][p]["gpu_ms"] for p in passes)
+    present = [p.rstrip("?") for p in passes if p.rstrip("?") in report["passes"]]
+    return sum(report["passes"][p]["gpu_ms"] for p in present)
 
 
 def ratio(new, old):

@@ -31,6 +31,7 @@ void FrameConstantsBuffer::beginFrame(uint32_t slot, const scene::CameraPose& ca
     extent_ = extent;
     computeClear_ = view.clear == ClearMethod::Compute ||
                     (view.clear == ClearMethod::Auto && passes::ImageClear::computeIsCheaper(ctx_.info()));
+    depthPrepass_ = view.depthPrepass;
     eye_ = camera.position;
     mirrored_.reset();
     gpu::FrameConstants f{};
@@ -70,6 +71,7 @@ passes::FrameInputs FrameConstantsBuffer::inputs(const ReflectorSet& reflectors,
     in.samplers = &samplers_;
     in.clear = &clear_;
     in.computeClear = computeClear_;
+    in.depthPrepass = depthPrepass_;
     in.scene = &scene_;
     in.draws = scene_.drawBuffer(slot_);
     in.motion = scene_.motionBuffer(slot_);

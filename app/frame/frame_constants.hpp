@@ -40,6 +40,7 @@ private:
     const shader::Samplers& samplers_;
     const passes::ImageClear& clear_;
     bool computeClear_ = false;  // this frame's clear method (ViewSettings::clear, auto resolved)
+    bool depthPrepass_ = false;  // ViewSettings::depthPrepass
     const gpu::GpuScene& scene_;
     uint32_t framesInFlight_;
     vk::Buffer buffer_;

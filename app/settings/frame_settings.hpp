@@ -22,6 +22,7 @@ struct ViewSettings {        // owner: frame (composite, lighting, tonemap, shad
     float exposure;
     uint32_t shadowRes;
     ClearMethod clear;
+    bool depthPrepass;       // the G-buffer's depth-only pre-pass
 };
 struct EnvSettings {         // owner: env (every technique's misses)
     bool fallback;           // misses and screen edges fall back to the environment

@@ -260,6 +260,10 @@ const std::vector<SettingDecl>& settingDecls() {
                             "how passes clear images: vkCmdClearColorImage (transfer; a memset on lavapipe), a compute pass (on an "
                             "H100 0.008 ms against the transfer clear's 0.32 for a 1080p rgba16f image), or auto (compute unless "
                             "the device is a CPU); the same bits either way"),
+        toggle("depth_prepass", "frame", [](FrameSettings& s) -> bool& { return s.view.depthPrepass; }, true,
+               "the G-buffer draws the opaque scene's depth alone first, so its fragment shader runs once per visible pixel "
+               "(gbuffer.prepass; masked materials keep their alpha test in the G-buffer pass); the same images either way "
+               "(0: one pass, shading every layer drawn)"),
     };
     return decls;
 }

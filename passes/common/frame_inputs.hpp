@@ -27,6 +27,7 @@ struct FrameInputs {
     // How passes clear images (common/clear_pass.hpp): ImageClear's compute clear, or a transfer clear.
     const ImageClear* clear = nullptr;
     bool computeClear = false;
+    bool depthPrepass = false;  // the G-buffer pass draws depth alone first (gbuffer/gbuffer_pass.hpp)
 };
 
 // Vertex layout of scene::Vertex for the mesh passes.

@@ -17,6 +17,10 @@ layout(location = 1) out vec4 vTangent;
 layout(location = 2) out vec2 vUv;
 layout(location = 4) out vec4 vColor;
 
+// invariant: the depth pre-pass (no fragment shader, no varyings) must place every vertex exactly where
+// the shading pass does, or the two would cover different pixels along silhouettes.
+invariant gl_Position;
+
 void main() {
     DrawData d = draws[pc.drawIndex];
     vec4 world = d.world * vec4(inPosition, 1.0);

@@ -27,6 +27,24 @@ GBufferPass::GBufferPass(const vk::Context& ctx, const gpu::GpuScene& scene) : c
                     .colorFormats({kNormalFormat, kAlbedoFormat, kMaterialFormat, kReflectorFormat, kEmissiveFormat})
                     .depth(kDepthFormat, true, true, VK_COMPARE_OP_GREATER)
                     .build();
+    // The pre-pass leaves each pixel's nearest depth pushed slightly farther (reverse-Z: smaller), and
+    // the shading pass then runs exactly as without it, from that depth instead of from 0: the nearest
+    // fragment, or the first drawn of several at one depth, still passes and writes, and only it (and
+    // whatever lies within the bias behind it) is shaded. So the images are the same bit for bit, ties
+    // included (an equal test would let the last of them win). The bias covers the two pipelines'
+    // depths differing in rounding: on lavapipe 4 steps alone left one pixel unshaded on the stairs in
+    // one of TAA's 16 jitter phases (gpu.DepthPrepass.*). Masked draws are left out: their alpha test
+    // decides their depth.
+    shader::PipelineLayoutDesc depthLayout;
+    depthLayout.stages = VK_SHADER_STAGE_VERTEX_BIT;
+    depthLayout.pushConstantBytes = sizeof(gpu::DrawPush);
+    prepassPipeline_ = shader::GraphicsPipelineBuilder(ctx, "gbuffer.prepass")
+                           .vertex(PPR_SPIRV(gbuffer_vert))
+                           .layout(depthLayout)
+                           .vertexInput(sizeof(scene::Vertex), sceneVertexAttributes(false))
+                           .depth(kDepthFormat, true, true, VK_COMPARE_OP_GREATER)
+                           .depthBias(-kPrepassBiasSteps, -kPrepassBiasSlope)
+                           .build();
 }
 
 GBuffer GBufferPass::createTargets(graph::RenderGraph& g, const std::string& name, VkExtent2D extent) {
@@ -42,7 +60,8 @@ GBuffer GBufferPass::createTargets(graph::RenderGraph& g, const std::string& nam
 }
 
 GBuffer GBufferPass::add(graph::RenderGraph& g, const FrameInputs& in, const std::string& name, const GBuffer* targets) const {
-    const GBuffer out = targets ? *targets : createTargets(g, name, in.extent);
+    GBuffer out = targets ? *targets : createTargets(g, name, in.extent);
+    if (in.depthPrepass) out.depth = addPrepass(g, in, name + ".prepass", out.depth);
     const GBuffer& d = g.addPass<GBuffer>(
         name, graph::QueueKind::Graphics,
         [&](graph::PassBuilder& b, GBuffer& data) {
@@ -52,7 +71,7 @@ GBuffer GBufferPass::add(graph::RenderGraph& g, const FrameInputs& in, const std
             VkClearColorValue zero{};
             data.reflector = b.colorAttachment(out.reflector, graph::LoadOp::Clear, zero);
             data.emissive = b.colorAttachment(out.emissive, graph::LoadOp::Clear, {{0.0f, 0.0f, 0.0f, 0.0f}});
-            data.depth = b.depthAttachment(out.depth, graph::LoadOp::Clear, 0.0f);
+            data.depth = b.depthAttachment(out.depth, in.depthPrepass ? graph::LoadOp::Load : graph::LoadOp::Clear, 0.0f);
         },
         [this, in](const GBuffer&, graph::PassContext& pc) {
             VkCommandBuffer cmd = pc.cmd();
@@ -70,6 +89,25 @@ GBuffer GBufferPass::add(graph::RenderGraph& g, const FrameInputs& in, const std
             in.scene->drawOpaque(cmd, [&](uint32_t i) { pipeline_.pushConstants(cmd, gpu::DrawPush{i, in.looseCount, 0, 0}); });
         });
     return d;
+}
+
+graph::ImageHandle GBufferPass::addPrepass(graph::RenderGraph& g, const FrameInputs& in, const std::string& name, graph::ImageHandle depth) const {
+    struct Data {
+        graph::ImageHandle depth;
+    };
+    const Data& d = g.addPass<Data>(
+        name, graph::QueueKind::Graphics,
+        [&](graph::PassBuilder& b, Data& data) { data.depth = b.depthAttachment(depth, graph::LoadOp::Clear, 0.0f); },
+        [this, in](const Data&, graph::PassContext& pc) {
+            VkCommandBuffer cmd = pc.cmd();
+            prepassPipeline_.bind(cmd);
+            shader::PushDescriptors(ctx_)
+                .uniformBuffer(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
+                .storageBuffer(in.draws)
+                .push(cmd, prepassPipeline_);
+            in.scene->drawOpaque(cmd, false, [&](uint32_t i) { prepassPipeline_.pushConstants(cmd, gpu::DrawPush{i, 0, 0, 0}); });
+        });
+    return d.depth;
 }
 
 }  // namespace ppr::passes

@@ -1,5 +1,8 @@
 #pragma once
-// Opaque geometry into the G-buffer (layout in gbuffer.h).
+// Opaque geometry into the G-buffer (layout in gbuffer.h), after a depth-only pre-pass when
+// FrameInputs::depthPrepass asks for one: the G-buffer's fragment shader (three texture lookups, the
+// frame's costliest on lavapipe) then runs once per visible pixel instead of once per layer drawn
+// over it, with the same images.
 #include "common/frame_inputs.hpp"
 #include "graph/graph.hpp"
 
@@ -17,6 +20,11 @@ public:
     static constexpr VkFormat kMaterialFormat = VK_FORMAT_R8G8B8A8_UNORM;
     static constexpr VkFormat kReflectorFormat = VK_FORMAT_R16_UINT;
     static constexpr VkFormat kEmissiveFormat = VK_FORMAT_B10G11R11_UFLOAT_PACK32;
+    // The pre-pass's depth bias (toward far): steps of the depth format at the primitive's largest
+    // depth, plus a hundredth of a pixel's depth slope, so that the shading pass's own depth of the
+    // nearest fragment lies strictly in front of it, whatever each pipeline's rounding.
+    static constexpr float kPrepassBiasSteps = 4.0f;
+    static constexpr float kPrepassBiasSlope = 0.01f;
 
     GBufferPass(const vk::Context& ctx, const gpu::GpuScene& scene);
     // `targets`: existing images to draw into (new versions), e.g. the planar reference reusing one
@@ -26,8 +34,10 @@ public:
     static GBuffer createTargets(graph::RenderGraph& g, const std::string& name, VkExtent2D extent);
 
 private:
+    // The opaque, unmasked draws' depth into `depth` (cleared first); returns its new version.
+    graph::ImageHandle addPrepass(graph::RenderGraph& g, const FrameInputs& in, const std::string& name, graph::ImageHandle depth) const;
     const vk::Context& ctx_;
-    shader::Pipeline pipeline_;
+    shader::Pipeline pipeline_, prepassPipeline_;
 };
 
 }  // namespace ppr::passes
