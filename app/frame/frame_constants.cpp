@@ -1,6 +1,7 @@
 #include "frame/frame_constants.hpp"
 
 #include "common/clear_pass.hpp"
+#include "frame/depth_prepass.hpp"
 #include "scene/mirror.hpp"
 
 #include <cstring>
@@ -12,6 +13,9 @@ FrameConstantsBuffer::FrameConstantsBuffer(const vk::Context& ctx, const shader:
     : ctx_(ctx), samplers_(samplers), clear_(clear), scene_(scene), framesInFlight_(framesInFlight) {
     const VkDeviceSize align = 256;  // ≥ minUniformBufferOffsetAlignment on every known device
     stride_ = (sizeof(gpu::FrameConstants) + align - 1) / align * align;
+    const scene::Scene& s = scene.cpu();
+    for (uint32_t i = 0; i < s.draws.size(); ++i)
+        if (!scene.transparent(i) && !scene.masked(i)) opaqueTriangles_ += s.meshes[s.draws[i].mesh].indexCount / 3;
 }
 
 FrameConstantsBuffer::~FrameConstantsBuffer() { vk::destroyBuffer(ctx_, buffer_); }
@@ -31,7 +35,7 @@ void FrameConstantsBuffer::beginFrame(uint32_t slot, const scene::CameraPose& ca
     extent_ = extent;
     computeClear_ = view.clear == ClearMethod::Compute ||
                     (view.clear == ClearMethod::Auto && passes::ImageClear::computeIsCheaper(ctx_.info()));
-    depthPrepass_ = view.depthPrepass;
+    depthPrepass_ = depthPrepassWanted(view.depthPrepass, opaqueTriangles_, uint64_t(extent.width) * extent.height);
     eye_ = camera.position;
     mirrored_.reset();
     gpu::FrameConstants f{};

@@ -40,7 +40,8 @@ private:
     const shader::Samplers& samplers_;
     const passes::ImageClear& clear_;
     bool computeClear_ = false;  // this frame's clear method (ViewSettings::clear, auto resolved)
-    bool depthPrepass_ = false;  // ViewSettings::depthPrepass
+    bool depthPrepass_ = false;  // this frame's: ViewSettings::depthPrepass, auto resolved
+    uint64_t opaqueTriangles_ = 0;  // what the pre-pass would draw (depth_prepass=auto)
     const gpu::GpuScene& scene_;
     uint32_t framesInFlight_;
     vk::Buffer buffer_;

@@ -16,13 +16,15 @@ enum class EnvSource : uint32_t { Sky, Probe };
 enum class HoleRule : uint32_t { Off, Enclosed, Slides };
 // How passes clear images (passes/common/clear_pass.hpp); auto: compute unless the device is a CPU.
 enum class ClearMethod : uint32_t { Auto, Transfer, Compute };
+// The G-buffer's depth pre-pass; auto: while the scene's triangles are few for the frame's pixels (frame/depth_prepass.hpp).
+enum class DepthPrepass : uint32_t { Off, On, Auto };
 
 struct ViewSettings {        // owner: frame (composite, lighting, tonemap, shadow map)
     uint32_t debug;          // gpu::kDebug* (settings/debug_views.hpp)
     float exposure;
     uint32_t shadowRes;
     ClearMethod clear;
-    bool depthPrepass;       // the G-buffer's depth-only pre-pass
+    DepthPrepass depthPrepass;
 };
 struct EnvSettings {         // owner: env (every technique's misses)
     bool fallback;           // misses and screen edges fall back to the environment

@@ -260,10 +260,13 @@ const std::vector<SettingDecl>& settingDecls() {
                             "how passes clear images: vkCmdClearColorImage (transfer; a memset on lavapipe), a compute pass (on an "
                             "H100 0.008 ms against the transfer clear's 0.32 for a 1080p rgba16f image), or auto (compute unless "
                             "the device is a CPU); the same bits either way"),
-        toggle("depth_prepass", "frame", [](FrameSettings& s) -> bool& { return s.view.depthPrepass; }, true,
-               "the G-buffer draws the opaque scene's depth alone first, so its fragment shader runs once per visible pixel "
-               "(gbuffer.prepass; masked materials keep their alpha test in the G-buffer pass); the same images either way "
-               "(0: one pass, shading every layer drawn)"),
+        choice<DepthPrepass>("depth_prepass", "frame", [](FrameSettings& s) -> DepthPrepass& { return s.view.depthPrepass; },
+                             {"0", "1", "auto"}, "auto",
+                             "the G-buffer draws the opaque scene's depth alone first, so its fragment shader runs once per "
+                             "visible pixel (gbuffer.prepass; masked materials keep their alpha test in the G-buffer pass); the "
+                             "same images either way (0: one pass, shading every layer drawn; auto: the pre-pass while the "
+                             "opaque triangles number at most a quarter of the frame's pixels, beyond which it cost more than "
+                             "it saved on lavapipe)"),
     };
     return decls;
 }

@@ -1,6 +1,7 @@
 // Settings declared once: every key parses its default, round-trips its text, rejects what is out of
 // range with a message naming the key, and decodes into the typed FrameSettings the passes read.
 #include "common/frame.h"
+#include "frame/depth_prepass.hpp"
 #include "ppr_reflect/ppr_reflect.h"
 #include "settings/debug_views.hpp"
 #include "settings/settings.hpp"
@@ -154,4 +155,23 @@ TEST(DebugViews, TheDebugSettingOffersExactlyTheTable) {
         s.set("debug", v.name);
         EXPECT_EQ(s.values().view.debug, v.value) << v.name;
     }
+}
+
+// depth_prepass: 0 and 1 are what they say; auto draws the pre-pass while the opaque triangles number
+// at most a quarter of the pixels (the default scene at 1280x720: yes; the scale scene: no).
+TEST(DepthPrepass, AutoWeighsTrianglesAgainstPixels) {
+    const uint64_t pixels720 = 1280u * 720u;
+    EXPECT_TRUE(depthPrepassWanted(DepthPrepass::Auto, 20589, pixels720));
+    EXPECT_FALSE(depthPrepassWanted(DepthPrepass::Auto, 1115138, pixels720));
+    EXPECT_TRUE(depthPrepassWanted(DepthPrepass::Auto, pixels720 / 4, pixels720));
+    EXPECT_FALSE(depthPrepassWanted(DepthPrepass::Auto, pixels720 / 4 + 1, pixels720));
+    EXPECT_TRUE(depthPrepassWanted(DepthPrepass::Auto, 1115138, 3840u * 2160u));  // 4K: enough pixels
+    EXPECT_TRUE(depthPrepassWanted(DepthPrepass::On, 1115138, pixels720));
+    EXPECT_FALSE(depthPrepassWanted(DepthPrepass::Off, 0, pixels720));
+    Settings s;
+    EXPECT_EQ(s.values().view.depthPrepass, DepthPrepass::Auto);
+    s.set("depth_prepass", "0");
+    EXPECT_EQ(s.values().view.depthPrepass, DepthPrepass::Off);
+    s.set("depth_prepass", "1");
+    EXPECT_EQ(s.values().view.depthPrepass, DepthPrepass::On);
 }
