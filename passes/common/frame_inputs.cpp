@@ -1,5 +1,7 @@
 #include "common/frame_inputs.hpp"
 
+#include "gpu/scene_data.h"
+
 #include <cstddef>
 
 namespace ppr::passes {
@@ -15,6 +17,15 @@ std::vector<VkVertexInputAttributeDescription> sceneVertexAttributes(bool positi
         a.push_back({4, 0, VK_FORMAT_R16G16B16A16_UNORM, static_cast<uint32_t>(offsetof(Vertex, color))});
     }
     return a;
+}
+
+void drawUnmaskedDepth(const vk::Context& ctx, VkCommandBuffer cmd, const shader::Pipeline& pipeline, const FrameInputs& in) {
+    pipeline.bind(cmd);
+    shader::PushDescriptors(ctx)
+        .uniformBuffer(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
+        .storageBuffer(in.draws)
+        .push(cmd, pipeline);
+    in.scene->drawOpaque(cmd, false, [&](uint32_t i) { pipeline.pushConstants(cmd, gpu::DrawPush{i, 0, 0, 0}); });
 }
 
 }  // namespace ppr::passes

@@ -33,4 +33,8 @@ struct FrameInputs {
 // Vertex layout of scene::Vertex for the mesh passes.
 std::vector<VkVertexInputAttributeDescription> sceneVertexAttributes(bool positionOnly);
 
+// Records the opaque, unmasked draws with a depth-only `pipeline` whose set 0 is the frame constants
+// and the draw records (the shadow map, the G-buffer's pre-pass).
+void drawUnmaskedDepth(const vk::Context& ctx, VkCommandBuffer cmd, const shader::Pipeline& pipeline, const FrameInputs& in);
+
 }  // namespace ppr::passes

@@ -98,15 +98,7 @@ graph::ImageHandle GBufferPass::addPrepass(graph::RenderGraph& g, const FrameInp
     const Data& d = g.addPass<Data>(
         name, graph::QueueKind::Graphics,
         [&](graph::PassBuilder& b, Data& data) { data.depth = b.depthAttachment(depth, graph::LoadOp::Clear, 0.0f); },
-        [this, in](const Data&, graph::PassContext& pc) {
-            VkCommandBuffer cmd = pc.cmd();
-            prepassPipeline_.bind(cmd);
-            shader::PushDescriptors(ctx_)
-                .uniformBuffer(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
-                .storageBuffer(in.draws)
-                .push(cmd, prepassPipeline_);
-            in.scene->drawOpaque(cmd, false, [&](uint32_t i) { prepassPipeline_.pushConstants(cmd, gpu::DrawPush{i, 0, 0, 0}); });
-        });
+        [this, in](const Data&, graph::PassContext& pc) { drawUnmaskedDepth(ctx_, pc.cmd(), prepassPipeline_, in); });
     return d.depth;
 }
 

@@ -44,12 +44,7 @@ graph::ImageHandle ShadowPass::add(graph::RenderGraph& g, const FrameInputs& in,
         [&](graph::PassBuilder& b, Data& data) { data.map = b.depthAttachment(map, graph::LoadOp::Clear, 0.0f); },
         [this, in](const Data&, graph::PassContext& pc) {
             VkCommandBuffer cmd = pc.cmd();
-            pipeline_.bind(cmd);
-            shader::PushDescriptors(ctx_)
-                .uniformBuffer(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
-                .storageBuffer(in.draws)
-                .push(cmd, pipeline_);
-            in.scene->drawOpaque(cmd, false, [&](uint32_t i) { pipeline_.pushConstants(cmd, gpu::DrawPush{i, 0, 0, 0}); });
+            drawUnmaskedDepth(ctx_, cmd, pipeline_, in);
             if (!anyMasked_) return;
             maskedPipeline_.bind(cmd);
             shader::PushDescriptors(ctx_)
