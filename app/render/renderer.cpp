@@ -49,6 +49,7 @@ Renderer::Renderer(const vk::Context& ctx, const scene::Scene& scene) : ctx_(ctx
     samplers_.create(ctx);
     gpuScene_ = std::make_unique<gpu::GpuScene>(ctx, scene, samplers_.linearRepeatAniso, kFramesInFlight);
     shadow_ = std::make_unique<passes::ShadowPass>(ctx, *gpuScene_);
+    shadowCache_ = std::make_unique<ShadowMapCache>(ctx, *shadow_, gpuScene_->animated());
     gbuffer_ = std::make_unique<passes::GBufferPass>(ctx, *gpuScene_);
     lighting_ = std::make_unique<passes::LightingPass>(ctx);
     composite_ = std::make_unique<passes::CompositePass>(ctx);
@@ -75,6 +76,7 @@ Renderer::Renderer(const vk::Context& ctx, const scene::Scene& scene) : ctx_(ctx
 Renderer::~Renderer() {
     vkDeviceWaitIdle(ctx_.device());
     executor_.reset();
+    shadowCache_.reset();
     modules_.clear();
     services_.reset();
     environment_.reset();
@@ -163,7 +165,9 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
 
     graph::RenderGraph g;
     graph::Blackboard board;
-    const graph::ImageHandle shadowMap = shadow_->add(g, in, settings.view.shadowRes);
+    // A still scene's pose never changes; an animated one's is its clock (none: the pose as loaded).
+    const ShadowMapKey shadowKey{settings.view.shadowRes, gpuScene_->animated() ? req.sceneTime : std::nullopt};
+    const graph::ImageHandle shadowMap = shadowCache_->add(g, in, shadowKey, settings.view.shadowCache);
     const passes::GBuffer gb = gbuffer_->add(g, in);
     const graph::ImageHandle lit = lighting_->add(g, in, gb, shadowMap);
     board.put(gb);

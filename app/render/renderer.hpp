@@ -5,6 +5,7 @@
 // across frames: pipelines, the GPU scene, the reflector set, per-slot buffers, the technique modules.
 #include "common/clear_pass.hpp"
 #include "composite/composite_pass.hpp"
+#include "frame/shadow_map_cache.hpp"
 #include "frame/technique.hpp"
 #include "glass_forward/glass_forward_pass.hpp"
 #include "graph/executor.hpp"
@@ -77,6 +78,8 @@ public:
 
     // The reflection probe (--set env_source=probe): how often it was rendered, its cost and placement.
     const EnvironmentProbe& environmentProbe() const { return *environment_; }
+    // The kept shadow maps (shadow_cache=1): how many frames drew them.
+    const ShadowMapCache& shadowMapCache() const { return *shadowCache_; }
 
     const graph::GraphExecutor& executor() const { return *executor_; }
     graph::GraphExecutor& executor() { return *executor_; }  // the viewer trims the transient pool after resizes
@@ -91,6 +94,7 @@ private:
     shader::Samplers samplers_;
     std::unique_ptr<gpu::GpuScene> gpuScene_;
     std::unique_ptr<passes::ShadowPass> shadow_;
+    std::unique_ptr<ShadowMapCache> shadowCache_;
     std::unique_ptr<passes::GBufferPass> gbuffer_;
     std::unique_ptr<passes::LightingPass> lighting_;
     std::unique_ptr<passes::CompositePass> composite_;

@@ -23,6 +23,7 @@ struct ViewSettings {        // owner: frame (composite, lighting, tonemap, shad
     uint32_t debug;          // gpu::kDebug* (settings/debug_views.hpp)
     float exposure;
     uint32_t shadowRes;
+    bool shadowCache;        // draw the shadow map again only when what casts it changes (frame/shadow_map_cache.hpp)
     ClearMethod clear;
     DepthPrepass depthPrepass;
 };

@@ -255,6 +255,10 @@ const std::vector<SettingDecl>& settingDecls() {
         number("exposure", "frame", [](FrameSettings& s) -> float& { return s.view.exposure; }, 1, 0.01, 100.0, "exposure multiplier before tonemapping"),
         integer("shadowres", "frame", [](FrameSettings& s) -> uint32_t& { return s.view.shadowRes; }, 2048, 256, 8192,
                 "shadow map resolution (texels per side)"),
+        toggle("shadow_cache", "frame", [](FrameSettings& s) -> bool& { return s.view.shadowCache; }, true,
+               "the sun's shadow map is kept from frame to frame: the casters the animation never moves are drawn once "
+               "(again when shadowres changes), and an animated scene's moving casters over a copy of them when its pose "
+               "changes (shadow.restore, shadow.moving); the same images either way (0: the whole map drawn every frame)"),
         choice<ClearMethod>("clear", "frame", [](FrameSettings& s) -> ClearMethod& { return s.view.clear; }, {"auto", "transfer", "compute"},
                             "auto",
                             "how passes clear images: vkCmdClearColorImage (transfer; a memset on lavapipe), a compute pass (on an "

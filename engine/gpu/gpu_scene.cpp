@@ -48,6 +48,8 @@ bool GpuScene::transparent(uint32_t draw) const {
     return std::binary_search(transparentDraws_.begin(), transparentDraws_.end(), draw);
 }
 
+bool GpuScene::moves(uint32_t draw) const { return std::binary_search(movingDraws_.begin(), movingDraws_.end(), draw); }
+
 bool GpuScene::masked(uint32_t draw) const {
     const scene::DrawItem& d = scene_.draws[draw];
     if (d.mesh >= scene_.meshes.size()) return false;
@@ -84,6 +86,8 @@ GpuScene::GpuScene(const vk::Context& ctx, const scene::Scene& scene, VkSampler 
     }
     const scene::SceneAnimation& animation = scene.animation;
     for (size_t i = 0; i < animation.draws.size(); ++i) draws[animation.draws[i]].motionSlot = SceneMotion::slotOf(i);
+    movingDraws_ = animation.draws;
+    std::sort(movingDraws_.begin(), movingDraws_.end());
     if (animation.empty()) draws_ = uploadBuffer(ctx, draws.data(), draws.size() * sizeof(DrawData), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "scene draws");
     else motion_ = std::make_unique<SceneMotion>(ctx, scene, draws, framesInFlight);
     const MotionData identity{glm::mat4(1.0f)};

@@ -53,12 +53,21 @@ public:
     }
     bool transparent(uint32_t draw) const;
     bool masked(uint32_t draw) const;  // alphaMode MASK: cut out by base colour alpha
-    // The opaque draws whose masked() equals `masked` (the shadow map draws the two kinds with two pipelines).
+    bool moves(uint32_t draw) const;  // the animation moves it (scene::SceneAnimation::draws)
+    // The opaque draws whose masked() equals `masked` (the shadow map draws the two kinds with two
+    // pipelines), of `subset`: all, those the animation never moves, or those it moves (the kept
+    // shadow map holds the still ones: app/frame/shadow_map_cache.hpp).
+    enum class Subset { All, Still, Moving };
     template <class F>
-    void drawOpaque(VkCommandBuffer cmd, bool masked, F&& perDraw) const {
+    void drawOpaque(VkCommandBuffer cmd, bool masked, Subset subset, F&& perDraw) const {
         bindGeometry(cmd);
         for (uint32_t i = 0; i < scene_.draws.size(); ++i)
-            if (!transparent(i) && this->masked(i) == masked) drawOne(cmd, i, perDraw);
+            if (!transparent(i) && this->masked(i) == masked && (subset == Subset::All || moves(i) == (subset == Subset::Moving)))
+                drawOne(cmd, i, perDraw);
+    }
+    template <class F>
+    void drawOpaque(VkCommandBuffer cmd, bool masked, F&& perDraw) const {
+        drawOpaque(cmd, masked, Subset::All, perDraw);
     }
     const std::vector<uint32_t>& transparentDraws() const { return transparentDraws_; }
 
@@ -84,6 +93,7 @@ private:
     VkDescriptorPool pool_ = VK_NULL_HANDLE;
     VkDescriptorSet textureSet_ = VK_NULL_HANDLE;
     std::vector<uint32_t> transparentDraws_;
+    std::vector<uint32_t> movingDraws_;  // sorted
 };
 
 // Upload helper: copies `bytes` into a GPU-only buffer through a staging buffer (load time only).

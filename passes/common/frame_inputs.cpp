@@ -19,13 +19,14 @@ std::vector<VkVertexInputAttributeDescription> sceneVertexAttributes(bool positi
     return a;
 }
 
-void drawUnmaskedDepth(const vk::Context& ctx, VkCommandBuffer cmd, const shader::Pipeline& pipeline, const FrameInputs& in) {
+void drawUnmaskedDepth(const vk::Context& ctx, VkCommandBuffer cmd, const shader::Pipeline& pipeline, const FrameInputs& in,
+                       gpu::GpuScene::Subset subset) {
     pipeline.bind(cmd);
     shader::PushDescriptors(ctx)
         .uniformBuffer(in.frameConstants, in.frameConstantsOffset, in.frameConstantsSize)
         .storageBuffer(in.draws)
         .push(cmd, pipeline);
-    in.scene->drawOpaque(cmd, false, [&](uint32_t i) { pipeline.pushConstants(cmd, gpu::DrawPush{i, 0, 0, 0}); });
+    in.scene->drawOpaque(cmd, false, subset, [&](uint32_t i) { pipeline.pushConstants(cmd, gpu::DrawPush{i, 0, 0, 0}); });
 }
 
 }  // namespace ppr::passes

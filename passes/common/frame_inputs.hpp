@@ -34,7 +34,8 @@ struct FrameInputs {
 std::vector<VkVertexInputAttributeDescription> sceneVertexAttributes(bool positionOnly);
 
 // Records the opaque, unmasked draws with a depth-only `pipeline` whose set 0 is the frame constants
-// and the draw records (the shadow map, the G-buffer's pre-pass).
-void drawUnmaskedDepth(const vk::Context& ctx, VkCommandBuffer cmd, const shader::Pipeline& pipeline, const FrameInputs& in);
+// and the draw records (the shadow map, the G-buffer's pre-pass), of `subset` (GpuScene::drawOpaque).
+void drawUnmaskedDepth(const vk::Context& ctx, VkCommandBuffer cmd, const shader::Pipeline& pipeline, const FrameInputs& in,
+                       gpu::GpuScene::Subset subset = gpu::GpuScene::Subset::All);
 
 }  // namespace ppr::passes

@@ -35,16 +35,20 @@ ShadowPass::ShadowPass(const vk::Context& ctx, const gpu::GpuScene& scene) : ctx
 }
 
 graph::ImageHandle ShadowPass::add(graph::RenderGraph& g, const FrameInputs& in, uint32_t resolution) const {
+    return addInto(g, in, g.createImage("shadowMap", {resolution, resolution, kFormat, 1}));
+}
+
+graph::ImageHandle ShadowPass::addInto(graph::RenderGraph& g, const FrameInputs& in, graph::ImageHandle map, Casters casters) const {
     struct Data {
         graph::ImageHandle map;
     };
-    graph::ImageHandle map = g.createImage("shadowMap", {resolution, resolution, kFormat, 1});
+    const bool over = casters == Casters::Moving;
     const Data& d = g.addPass<Data>(
-        "shadow", graph::QueueKind::Graphics,
-        [&](graph::PassBuilder& b, Data& data) { data.map = b.depthAttachment(map, graph::LoadOp::Clear, 0.0f); },
-        [this, in](const Data&, graph::PassContext& pc) {
+        over ? "shadow.moving" : "shadow", graph::QueueKind::Graphics,
+        [&](graph::PassBuilder& b, Data& data) { data.map = b.depthAttachment(map, over ? graph::LoadOp::Load : graph::LoadOp::Clear, 0.0f); },
+        [this, in, casters](const Data&, graph::PassContext& pc) {
             VkCommandBuffer cmd = pc.cmd();
-            drawUnmaskedDepth(ctx_, cmd, pipeline_, in);
+            drawUnmaskedDepth(ctx_, cmd, pipeline_, in, casters);
             if (!anyMasked_) return;
             maskedPipeline_.bind(cmd);
             shader::PushDescriptors(ctx_)
@@ -54,9 +58,31 @@ graph::ImageHandle ShadowPass::add(graph::RenderGraph& g, const FrameInputs& in,
                 .push(cmd, maskedPipeline_);
             VkDescriptorSet textures = in.scene->textureSet();
             vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, maskedPipeline_.layout(), 1, 1, &textures, 0, nullptr);
-            in.scene->drawOpaque(cmd, true, [&](uint32_t i) { maskedPipeline_.pushConstants(cmd, gpu::DrawPush{i, 0, 0, 0}); });
+            in.scene->drawOpaque(cmd, true, casters, [&](uint32_t i) { maskedPipeline_.pushConstants(cmd, gpu::DrawPush{i, 0, 0, 0}); });
         });
     return d.map;
+}
+
+graph::ImageHandle ShadowPass::addRestore(graph::RenderGraph& g, graph::ImageHandle from, graph::ImageHandle to) {
+    struct Copy {
+        graph::ImageHandle from, to;
+    };
+    return g
+        .addPass<Copy>(
+            "shadow.restore", graph::QueueKind::Transfer,
+            [&](graph::PassBuilder& b, Copy& d) {
+                d.from = b.transferSrc(from);
+                d.to = b.transferDst(to);
+            },
+            [](const Copy& d, graph::PassContext& pc) {
+                const graph::ImageDesc& size = pc.desc(d.to);
+                VkImageCopy region{};
+                region.srcSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
+                region.dstSubresource = region.srcSubresource;
+                region.extent = {size.width, size.height, 1};
+                vkCmdCopyImage(pc.cmd(), pc.image(d.from), pc.layout(d.from), pc.image(d.to), pc.layout(d.to), 1, &region);
+            })
+        .to;
 }
 
 }  // namespace ppr::passes

@@ -2,6 +2,7 @@
 // range with a message naming the key, and decodes into the typed FrameSettings the passes read.
 #include "common/frame.h"
 #include "frame/depth_prepass.hpp"
+#include "frame/shadow_map_work.hpp"
 #include "ppr_reflect/ppr_reflect.h"
 #include "settings/debug_views.hpp"
 #include "settings/settings.hpp"
@@ -174,4 +175,25 @@ TEST(DepthPrepass, AutoWeighsTrianglesAgainstPixels) {
     EXPECT_EQ(s.values().view.depthPrepass, DepthPrepass::Off);
     s.set("depth_prepass", "1");
     EXPECT_EQ(s.values().view.depthPrepass, DepthPrepass::On);
+}
+
+TEST(ShadowCache, DrawsTheKeptMapsOnlyWhenWhatCastsThemChanges) {
+    const ShadowMapKey rest{2048, std::nullopt}, raised{2048, 1.0};
+    // The first frame draws everything; a still scene has no frame map of its own.
+    EXPECT_EQ(shadowMapWork(std::nullopt, rest, true), (ShadowMapWork{true, true}));
+    EXPECT_EQ(shadowMapWork(std::nullopt, rest, false), (ShadowMapWork{true, false}));
+    // Nothing moved: nothing to draw.
+    EXPECT_EQ(shadowMapWork(rest, rest, true), (ShadowMapWork{false, false}));
+    EXPECT_EQ(shadowMapWork(raised, raised, true), (ShadowMapWork{false, false}));
+    // The animation clock moved: only the moving casters, over the kept still map.
+    EXPECT_EQ(shadowMapWork(rest, raised, true), (ShadowMapWork{false, true}));
+    EXPECT_EQ(shadowMapWork(raised, ShadowMapKey{2048, 1.5}, true), (ShadowMapWork{false, true}));
+    EXPECT_EQ(shadowMapWork(raised, rest, true), (ShadowMapWork{false, true}));
+    // A new resolution: both maps again.
+    EXPECT_EQ(shadowMapWork(rest, ShadowMapKey{1024, std::nullopt}, true), (ShadowMapWork{true, true}));
+    EXPECT_EQ(shadowMapWork(rest, ShadowMapKey{1024, std::nullopt}, false), (ShadowMapWork{true, false}));
+    Settings s;
+    EXPECT_TRUE(s.values().view.shadowCache);
+    s.set("shadow_cache", "0");
+    EXPECT_FALSE(s.values().view.shadowCache);
 }
