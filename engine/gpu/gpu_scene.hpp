@@ -65,10 +65,6 @@ public:
             if (!transparent(i) && this->masked(i) == masked && (subset == Subset::All || moves(i) == (subset == Subset::Moving)))
                 drawOne(cmd, i, perDraw);
     }
-    template <class F>
-    void drawOpaque(VkCommandBuffer cmd, bool masked, F&& perDraw) const {
-        drawOpaque(cmd, masked, Subset::All, perDraw);
-    }
     const std::vector<uint32_t>& transparentDraws() const { return transparentDraws_; }
 
 private:
