@@ -32,6 +32,7 @@ public:
         uint64_t moving = 0;  // frames that drew the moving casters over it
     };
     Counts counts() const { return counts_; }
+    bool animated() const { return animated_; }
 
 private:
     void release();  // waits for the device: only on a resolution change, shadow_cache=0 and teardown

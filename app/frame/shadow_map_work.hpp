@@ -3,6 +3,7 @@
 // logic, unit-tested without a GPU.
 #include <cstdint>
 #include <optional>
+#include <string>
 
 namespace ppr::app {
 
@@ -22,6 +23,15 @@ struct ShadowMapWork {
 constexpr ShadowMapWork shadowMapWork(const std::optional<ShadowMapKey>& drawn, const ShadowMapKey& now, bool animated) {
     const bool still = !drawn || drawn->resolution != now.resolution;
     return {still, animated && (still || drawn->pose != now.pose)};
+}
+
+// The viewer's line under its pass timings, where the shadow pass is missing from a frame that
+// reads the kept map: how many frames drew each map (`kept`: shadow_cache=1).
+inline std::string shadowMapSummary(bool kept, bool animated, uint64_t stillDraws, uint64_t movingDraws) {
+    if (!kept) return "shadow map: drawn every frame (shadow_cache=0)";
+    std::string s = "shadow map: kept; still casters drawn " + std::to_string(stillDraws) + (stillDraws == 1 ? " time" : " times");
+    if (animated) s += ", moving ones " + std::to_string(movingDraws);
+    return s;
 }
 
 }  // namespace ppr::app

@@ -12,6 +12,7 @@
 #include "viewer/viewer.hpp"
 
 #include "editor/editor_ui.hpp"
+#include "frame/shadow_map_work.hpp"
 
 #include "capture/report.hpp"
 #include "cli/scene_source.hpp"
@@ -386,6 +387,9 @@ void Viewer::buildUi() {
     m.glassStats = glassStats_;
     m.reflectors = static_cast<uint32_t>(renderer_->reflectors().size());
     m.reflectorsProjected = std::min(m.reflectors, gpu::kPprMaxReflectors);
+    const ShadowMapCache& shadowCache = renderer_->shadowMapCache();
+    m.shadowMap = shadowMapSummary(settings_.values().view.shadowCache, shadowCache.animated(), shadowCache.counts().still,
+                                   shadowCache.counts().moving);
     m.status = status_;
     const PanelActions a = drawPanel(m);
     status_ = m.status;

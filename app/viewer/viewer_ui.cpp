@@ -328,6 +328,7 @@ PanelActions drawPanel(PanelModel& m) {
             ImGui::EndTable();
         }
         ImGui::Text("total GPU %.3f ms", m.timings->totalMedianMs());
+        if (!m.shadowMap.empty()) ImGui::TextDisabled("%s", m.shadowMap.c_str());
     }
 
     if (ImGui::Button("Save capture (F12)")) a.capture = true;

@@ -69,6 +69,7 @@ struct PanelModel {
     std::optional<gpu::PprFrameStats> pprStats;  // tile and culling counts of the last completed PPR frame
     std::optional<GlassStats> glassStats;        // its glass atlas (PPR with glass panels)
     uint32_t reflectors = 0, reflectorsProjected = 0;
+    std::string shadowMap;  // frame/shadow_map_work.hpp shadowMapSummary: whether the frame reads a kept map
     std::string status;  // last capture result or settings error
     AbView* ab = nullptr;       // A/B with the reference (edited in place)
     float* abSplit = nullptr;   // split position, fraction of the width

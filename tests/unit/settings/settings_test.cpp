@@ -197,3 +197,9 @@ TEST(ShadowCache, DrawsTheKeptMapsOnlyWhenWhatCastsThemChanges) {
     s.set("shadow_cache", "0");
     EXPECT_FALSE(s.values().view.shadowCache);
 }
+
+TEST(ShadowCache, TheViewerSaysWhetherTheFrameReadsAKeptMap) {
+    EXPECT_EQ(shadowMapSummary(false, true, 5, 7), "shadow map: drawn every frame (shadow_cache=0)");
+    EXPECT_EQ(shadowMapSummary(true, false, 1, 0), "shadow map: kept; still casters drawn 1 time");
+    EXPECT_EQ(shadowMapSummary(true, true, 2, 150), "shadow map: kept; still casters drawn 2 times, moving ones 150");
+}
