@@ -15,7 +15,7 @@ source "$root/tests/ui/ui_lib.sh" "$@"
 # no machine's path.
 ppr_abs="$(cd "$(dirname "$PPR")" && pwd)/$(basename "$PPR")"
 cp "$(dirname "$ppr_abs")/../content/default/default.reflectors.json" "$WORK/" || fail "no default reflector file next to $PPR"
-(cd "$WORK" && exec "$ppr_abs" view --size 1280x720 --camera puddles --reflectors default.reflectors.json --out out) >"$WORK/viewer.log" 2>&1 &
+(cd "$WORK" && exec "$ppr_abs" view --size 1280x720 --render-scale 1 --camera puddles --reflectors default.reflectors.json --out out) >"$WORK/viewer.log" 2>&1 &
 VIEWER_PID=$!
 find_window
 [ "$WW" -eq 1280 ] && [ "$WH" -eq 720 ] || fail "window is ${WW}x${WH}, expected 1280x720"

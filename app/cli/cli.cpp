@@ -121,8 +121,9 @@ std::string usage() {
            "  --sweep S            bench, repeatable: techniques | reflectors | coverage (default: all three)\n"
            "  --rounds N           bench: measure every row N times in turn (default 1); bench.json gives the medians and\n"
            "                       each round's values, bench.md the ratios within each round (for a noisy machine)\n"
-           "  --render-scale S     view: render at S times the window's size (0.1..1, default 1) and upscale, for\n"
-           "                       interactive frame rates on a CPU device; also in the panel\n"
+           "  --render-scale S     view: render at S times the window's size (0.1..1) and upscale, for interactive\n"
+           "                       frame rates on a CPU device; also in the panel. auto (default): 1 on a GPU, 0.5\n"
+           "                       on a CPU device such as lavapipe\n"
            "  --out DIR            output directory (default out)\n"
            "  --validation         Khronos validation + synchronization validation; any error exits 1\n"
            "                       (also enabled by PPR_VALIDATION=1)\n"
@@ -169,7 +170,10 @@ static Options parseArguments(int argc, const char* const* argv) {
         else if (a == "--frames") o.frames = parseUnsigned(a, value(a), 1, kMaxFrames);
         else if (a == "--warmup") o.warmup = parseUnsigned(a, value(a), 0, kMaxFrames);
         else if (a == "--rounds") o.rounds = parseUnsigned(a, value(a), 1, kMaxRounds);
-        else if (a == "--render-scale") o.renderScale = parseFloat(a, value(a), kMinRenderScale, 1.0f);
+        else if (a == "--render-scale") {
+            const std::string scale = value(a);
+            o.renderScale = scale == "auto" ? std::nullopt : std::optional<float>(parseFloat(a, scale, kMinRenderScale, 1.0f));
+        }
         else if (a == "--sweep") {
             const std::string sweep = value(a);
             const auto& names = benchSweepNames();
@@ -210,7 +214,7 @@ static Options parseArguments(int argc, const char* const* argv) {
     if (o.mode == Mode::Fit && o.outGiven && o.out.empty()) throw std::runtime_error("--out: expected a file name");
     if (!o.path.empty() && o.mode != Mode::Capture && o.mode != Mode::Compare)
         throw std::runtime_error("--path " + o.path + ": only capture and compare render camera paths");
-    if (o.mode != Mode::View && o.mode != Mode::Auto && o.renderScale != 1.0f)
+    if (o.mode != Mode::View && o.mode != Mode::Auto && o.renderScale && *o.renderScale != 1.0f)
         throw std::runtime_error("--render-scale: only the viewer renders below its window's size (capture, compare and bench render at --size)");
     if (o.mode != Mode::Bench && o.rounds != 1) throw std::runtime_error("--rounds " + std::to_string(o.rounds) + ": only bench measures in rounds");
     if (o.mode == Mode::Bench && o.sweeps.empty()) o.sweeps = benchSweepNames();

@@ -42,8 +42,9 @@ struct Options {
     float fitMinArea = 0.05f;                 // --min-area A (m²)
     bool fitAppend = false;                   // --append: keep the reflectors already in the output file
     // view: the frame is rendered at this fraction of the window's size and upscaled into it
-    // (app/render/render_scale.hpp); 1 = the window's own resolution.
-    float renderScale = 1.0f;
+    // (app/render/render_scale.hpp); 1 = the window's own resolution. None (`auto`, the default):
+    // the device's type decides (defaultRenderScale).
+    std::optional<float> renderScale;
 };
 
 // A technique with its own settings: "ppr@normalmap=off,holes=0" (compare and bench rows, capture).

@@ -10,11 +10,18 @@
 #include <glm/vec2.hpp>
 
 #include <array>
+#include <string_view>
 
 namespace ppr::app {
 
 // The panel's choices (the command line takes any value in [kMinRenderScale, 1]).
 constexpr std::array<float, 5> kRenderScaleChoices{1.0f, 0.75f, 0.5f, 0.33f, 0.25f};
+
+// `--render-scale auto` (the default): a GPU renders at the window's own resolution; a CPU device
+// (lavapipe) at half of it per side, where a 1280x720 window's PPR frame takes 63 ms instead of 167
+// (README): exploring at 6 frames a second is not exploring. The panel and the start-up line say so.
+constexpr float kCpuDeviceRenderScale = 0.5f;
+inline float defaultRenderScale(std::string_view deviceType) { return deviceType == "cpu" ? kCpuDeviceRenderScale : 1.0f; }
 
 // The render extent for an output (window) extent: each side scaled and rounded, at least 1 pixel.
 VkExtent2D scaledExtent(VkExtent2D window, float scale);

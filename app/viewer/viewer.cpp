@@ -223,7 +223,10 @@ private:
 };
 
 Viewer::Viewer(const Options& o, vk::Context& ctx, const scene::Scene& scene)
-    : options_(o), ctx_(ctx), scene_(scene), renderScale_(o.renderScale) {
+    : options_(o), ctx_(ctx), scene_(scene), renderScale_(o.renderScale.value_or(defaultRenderScale(ctx.info().type))) {
+    if (!o.renderScale && renderScale_ != 1.0f)
+        std::printf("ppr: rendering at %.2f of the window's size on a %s device (--render-scale 1 for its full size)\n", renderScale_,
+                    ctx.info().type.c_str());
     cameras_ = resolveCameras(scene, "");
     const ResolvedCamera start = resolveCameras(scene, o.camera).front();
     camera_.pose = start.pose;

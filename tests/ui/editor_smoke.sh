@@ -6,12 +6,13 @@
 # leaves a valid file.
 #
 # usage: editor_smoke.sh PPR_BINARY WORK_DIR
-# PPR_UI_VIEW_ARGS: more viewer options (ui.editor_render_scale passes --render-scale 0.5: the click
-# must pick the render pixel under the cursor, not the window pixel).
+# PPR_UI_VIEW_ARGS: more viewer options, default --render-scale 1 (the window's own resolution, which
+# `auto` would halve on lavapipe); ui.editor_render_scale passes --render-scale 0.5: the click must
+# pick the render pixel under the cursor, not the window pixel.
 set -uo pipefail
 
 TEST=${PPR_UI_TEST_NAME:-ui.editor_snap_move_save}
-read -r -a VIEW_ARGS <<<"${PPR_UI_VIEW_ARGS:-}"
+read -r -a VIEW_ARGS <<<"${PPR_UI_VIEW_ARGS:---render-scale 1}"
 # shellcheck source=ui_lib.sh
 source "$(dirname "$0")/ui_lib.sh" "$@"
 

@@ -52,12 +52,17 @@ TEST(CliLimits, BenchRounds) {
 }
 
 TEST(CliLimits, RenderScaleIsTheViewersAlone) {
-    EXPECT_FLOAT_EQ(parse({"ppr", "view"}).renderScale, 1.0f);
-    EXPECT_FLOAT_EQ(parse({"ppr", "view", "--render-scale", "0.5"}).renderScale, 0.5f);
-    EXPECT_FLOAT_EQ(parse({"ppr", "--render-scale", "0.1"}).renderScale, 0.1f);  // no command: the viewer with a display
+    EXPECT_FALSE(parse({"ppr", "view"}).renderScale.has_value());  // auto: the device decides (render_scale.hpp)
+    EXPECT_FALSE(parse({"ppr", "view", "--render-scale", "auto"}).renderScale.has_value());
+    EXPECT_FLOAT_EQ(parse({"ppr", "view", "--render-scale", "0.5"}).renderScale.value_or(0.0f), 0.5f);
+    EXPECT_FLOAT_EQ(parse({"ppr", "view", "--render-scale", "1"}).renderScale.value_or(0.0f), 1.0f);
+    EXPECT_FLOAT_EQ(parse({"ppr", "--render-scale", "0.1"}).renderScale.value_or(0.0f), 0.1f);  // no command: the viewer with a display
+    EXPECT_FLOAT_EQ(parse({"ppr", "capture", "--render-scale", "1"}).renderScale.value_or(0.0f), 1.0f);  // what capture does anyway
     EXPECT_EQ(errorOf({"ppr", "view", "--render-scale", "0.05"}), "--render-scale 0.05: out of range (0.1..1)");
     EXPECT_EQ(errorOf({"ppr", "view", "--render-scale", "2"}), "--render-scale 2: out of range (0.1..1)");
     EXPECT_EQ(errorOf({"ppr", "view", "--render-scale", "nan"}), "--render-scale nan: expected a number");
+    EXPECT_EQ(errorOf({"ppr", "view", "--render-scale", "Auto"}), "--render-scale Auto: expected a number");
+    EXPECT_EQ(errorOf({"ppr", "capture", "--render-scale", "auto"}), "(accepted)");  // the default, said out loud
     EXPECT_EQ(errorOf({"ppr", "capture", "--render-scale", "0.5"}),
               "--render-scale: only the viewer renders below its window's size (capture, compare and bench render at --size)");
 }

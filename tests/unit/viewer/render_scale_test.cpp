@@ -6,6 +6,15 @@
 namespace ppr::app {
 namespace {
 
+TEST(RenderScale, AutoRendersAtHalfSizeOnACpuDeviceAndFullSizeOnAGpu) {
+    EXPECT_FLOAT_EQ(defaultRenderScale("cpu"), 0.5f);
+    EXPECT_FLOAT_EQ(defaultRenderScale("discrete"), 1.0f);
+    EXPECT_FLOAT_EQ(defaultRenderScale("integrated"), 1.0f);
+    EXPECT_FLOAT_EQ(defaultRenderScale("virtual"), 1.0f);
+    EXPECT_FLOAT_EQ(defaultRenderScale(""), 1.0f);
+    EXPECT_EQ(scaledExtent({1280, 720}, defaultRenderScale("cpu")).width, 640u);
+}
+
 TEST(RenderScale, ScaledExtentRoundsEachSideAndKeepsAPixel) {
     EXPECT_EQ(scaledExtent({1280, 720}, 1.0f).width, 1280u);
     EXPECT_EQ(scaledExtent({1280, 720}, 1.0f).height, 720u);
