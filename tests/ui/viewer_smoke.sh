@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # ui.viewer_opens: `ppr view` opens a window on a private Xvfb display and draws the scene with the
-# ImGui panel; F2 (cycle the `debug` setting) changes the picture; F12 writes a capture; the viewer
-# exits cleanly with zero validation errors (it runs with --validation).
+# ImGui panel (at the default render scale, `auto`, which it says on a CPU device); F2 (cycle the
+# `debug` setting) changes the picture; F12 writes a capture; the viewer exits cleanly with zero
+# validation errors (it runs with --validation).
 #
 # usage: viewer_smoke.sh PPR_BINARY WORK_DIR
 # Environment knobs: PPR_UI_FRAMES (frame limit, a safety net: the script closes the viewer with
@@ -110,6 +111,15 @@ note "resized to 800x450, new area drawn (standard deviation $sd)"
 
 # 5. Clean exit: SIGTERM closes the window like the close button; exit code 0 = no validation errors.
 close_viewer
+# The default render scale (`auto`): half the window's size on a CPU device, which the viewer says at
+# start-up (read once it has exited: its output is buffered); a GPU renders at the window's own size and says nothing.
+if grep -q '(cpu, Vulkan' "$WORK/viewer.log"; then
+    grep -q "rendering at 0.50 of the window's size on a cpu device" "$WORK/viewer.log" ||
+        fail "a CPU device's viewer did not say it renders at half the window's size (--render-scale auto)"
+    note "render scale auto: 0.50 on the CPU device"
+elif grep -q "rendering at .* of the window's size" "$WORK/viewer.log"; then
+    fail "a GPU's viewer renders below the window's size by default"
+fi
 warnings=$(grep -c '^validation warning' "$WORK/viewer.log")
 [ "$warnings" -eq 0 ] || note "note: $warnings validation warning(s) in $WORK/viewer.log"
 note "PASS (viewer exit code 0, no validation errors)"
