@@ -1,5 +1,7 @@
 #include "vk/context.hpp"
 
+#include "util/process_heap.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -179,6 +181,8 @@ std::unique_ptr<Context> Context::create(const ContextOptions& options) {
                                   std::to_string(VK_API_VERSION_PATCH(props.apiVersion));
     ctx->info_.timestampPeriodNs = props.limits.timestampPeriod;
     ctx->info_.subPixelPrecisionBits = props.limits.subPixelPrecisionBits;
+    if (props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU && !util::heapTunedByUser(std::getenv("GLIBC_TUNABLES")))
+        ctx->info_.heapKept = util::keepFreedHeapMemory();
 
     // One queue family that does graphics + compute (+ transfer implicitly).
     uint32_t familyCount = 0;
