@@ -215,7 +215,8 @@ private:
     bool pickIssued_[Renderer::kFramesInFlight]{};
     std::optional<ViewClick> pendingClick_;
     glm::ivec2 pickPixel_{0};
-    std::deque<double> frameMs_, cpuMs_;
+    std::deque<double> frameMs_, cpuMs_, presentMs_;
+    double lastPresentMs_ = 0.0;  // renderFrame's vkQueuePresentKHR, which may wait for the frame
     std::string status_;
     std::string warning_;  // from the renderer (e.g. PPR refused at this size), shown in the panel
     bool captureRequested_ = false;
@@ -371,6 +372,7 @@ void Viewer::buildUi() {
     m.renderScale = &renderScale_;
     m.frameMs = average(frameMs_);
     m.cpuMs = average(cpuMs_);
+    m.presentMs = average(presentMs_);
     m.cameras = &cameras_;
     m.cameraIndex = cameraIndex_;
     m.cameraSpeed = camera_.speed;
@@ -430,6 +432,7 @@ void Viewer::buildUi() {
 }
 
 bool Viewer::renderFrame(uint32_t slot) {
+    lastPresentMs_ = 0.0;
     VkDevice dev = ctx_.device();
     uint32_t imageIndex = 0;
     const VkResult acq = vkAcquireNextImageKHR(dev, swapchain_->handle(), UINT64_MAX, sync_.acquired[slot], VK_NULL_HANDLE, &imageIndex);
@@ -493,7 +496,11 @@ bool Viewer::renderFrame(uint32_t slot) {
     pi.swapchainCount = 1;
     pi.pSwapchains = &sc;
     pi.pImageIndices = &imageIndex;
+    // Timed apart from the CPU's work: with vsync it waits for the display, and lavapipe's present
+    // waits for the frame itself, which its CPU threads are still rendering.
+    const Clock::time_point presentStart = Clock::now();
     const VkResult pr = vkQueuePresentKHR(ctx_.queue(), &pi);
+    lastPresentMs_ = std::chrono::duration<double, std::milli>(Clock::now() - presentStart).count();
     if (pr == VK_ERROR_OUT_OF_DATE_KHR || pr == VK_SUBOPTIMAL_KHR) swapchainDirty_ = true;
     else VK_CHECK(pr);
     return true;
@@ -597,7 +604,7 @@ void Viewer::run(uint64_t maxFrames, uint64_t captureAt) {
         buildUi();
         if (swapchainDirty_) continue;  // vsync toggled: recreate before rendering
         const bool presented = renderFrame(slot);
-        const double cpuMs = std::chrono::duration<double, std::milli>(Clock::now() - cpuStart).count();
+        const double cpuMs = std::chrono::duration<double, std::milli>(Clock::now() - cpuStart).count() - lastPresentMs_;
         if (!presented) continue;
 
         ++frames_;
@@ -608,6 +615,7 @@ void Viewer::run(uint64_t maxFrames, uint64_t captureAt) {
         };
         if (frames_ > 1) push(frameMs_, dtMs);
         push(cpuMs_, cpuMs);
+        push(presentMs_, lastPresentMs_);
         if (captureAt && frames_ == captureAt) captureRequested_ = true;
         if (captureRequested_) {
             captureRequested_ = false;

@@ -223,7 +223,10 @@ PanelActions drawPanel(PanelModel& m) {
     else
         ImGui::Text("%u x %u, rendered at %u x %u", m.extent.width, m.extent.height, m.renderExtent.width, m.renderExtent.height);
     ImGui::Text("frame %.2f ms (%.1f FPS)", m.frameMs, m.frameMs > 0.0 ? 1000.0 / m.frameMs : 0.0);
-    ImGui::Text("CPU %.2f ms (UI, record, submit, present)", m.cpuMs);
+    ImGui::Text("CPU %.2f ms (UI, record, submit)", m.cpuMs);
+    // Lavapipe's present waits until its CPU threads have rendered the frame; a GPU's, with vsync, for the display.
+    const bool cpuDevice = m.device && m.device->type == "cpu";
+    ImGui::Text("present %.2f ms%s", m.presentMs, cpuDevice ? " (waits for the frame)" : m.vsync ? " (waits for vsync)" : "");
     ImGui::TextDisabled("F2: debug view  F3: technique  F12: capture");
     ImGui::TextDisabled("WASD move, Q/E down/up");
     ImGui::TextDisabled("right mouse: look, wheel: speed");

@@ -56,6 +56,7 @@ struct PanelModel {
     float* renderScale = nullptr;  // edited in place (app/render/render_scale.hpp)
     double frameMs = 0.0;  // wall time per frame (average over the history)
     double cpuMs = 0.0;    // CPU time spent building + recording + submitting a frame
+    double presentMs = 0.0;  // in vkQueuePresentKHR: waiting for vsync, or on a CPU device for the frame itself
     const std::vector<ResolvedCamera>* cameras = nullptr;
     int cameraIndex = -1;  // -1: free camera
     float cameraSpeed = 0.0f;
