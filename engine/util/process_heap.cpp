@@ -2,7 +2,7 @@
 
 #include <string_view>
 
-#if defined(__GLIBC__)
+#if PPR_HEAP_KEEPABLE
 #include <malloc.h>
 #endif
 
@@ -17,7 +17,7 @@ bool heapTunedByUser(const char* glibcTunables) {
 }
 
 bool keepFreedHeapMemory() {
-#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
+#if PPR_HEAP_KEEPABLE
     // mallopt returns 1 on success; every one must hold for the heap to stay resident.
     return mallopt(M_TRIM_THRESHOLD, static_cast<int>(kHeapTrimThreshold)) == 1 &&
            mallopt(M_MMAP_THRESHOLD, static_cast<int>(kHeapMmapThreshold)) == 1 && mallopt(M_TOP_PAD, static_cast<int>(kHeapTopPad)) == 1;

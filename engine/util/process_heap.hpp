@@ -6,7 +6,18 @@
 // "The heap kept"). keepFreedHeapMemory() keeps freed memory in the process's heaps instead; the
 // process's resident size stays at its high-water mark.
 
+#include <cstddef>  // defines __GLIBC__ (through the C library's features.h) before the test below
+
+// glibc's allocator, not a sanitizer's (which ignores mallopt): where keepFreedHeapMemory() can work.
+#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
+#define PPR_HEAP_KEEPABLE 1
+#else
+#define PPR_HEAP_KEEPABLE 0
+#endif
+
 namespace ppr::util {
+
+inline constexpr bool kHeapKeepable = PPR_HEAP_KEEPABLE != 0;
 
 // The settings keepFreedHeapMemory() makes: no trimming below this much free memory at a heap's top,
 // blocks below the mmap threshold from the heap (glibc's largest: larger ones are mapped anyway), and
@@ -19,8 +30,7 @@ constexpr long kHeapTopPad = 64L << 20;
 // which case theirs stand.
 bool heapTunedByUser(const char* glibcTunables);
 
-// Applies the settings above (glibc's mallopt); false where they cannot be made (not glibc, or a
-// sanitizer's allocator, which ignores them).
+// Applies the settings above (glibc's mallopt); false where they cannot be made (!kHeapKeepable).
 bool keepFreedHeapMemory();
 
 }  // namespace ppr::util

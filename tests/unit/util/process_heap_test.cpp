@@ -8,21 +8,16 @@
 #include <cstdlib>
 #include <vector>
 
-#if defined(__GLIBC__)
+#if PPR_HEAP_KEEPABLE
 #include <malloc.h>
 #endif
 
 namespace ppr::util {
 namespace {
 
-#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
-constexpr bool kGlibcHeap = true;
-#else
-constexpr bool kGlibcHeap = false;
-#endif
-
-// Allocates 16 MiB in 64 KiB blocks (the size of lavapipe's binning blocks), touches and frees them
-// newest first, and returns how much free memory the main heap then keeps at its top.
+// Allocates 16 MiB in 64 KiB blocks (below glibc's 128 KiB mmap threshold, so from the heap, as a
+// driver's small allocations are), touches and frees them newest first, and returns how much free
+// memory the main heap then keeps at its top.
 size_t topKeptAfterAFrame() {
     std::vector<char*> blocks;
     for (int i = 0; i < 256; ++i) {
@@ -30,10 +25,19 @@ size_t topKeptAfterAFrame() {
         for (size_t b = 0; b < (64 << 10); b += 4096) blocks.back()[b] = 1;
     }
     for (auto it = blocks.rbegin(); it != blocks.rend(); ++it) std::free(*it);
-#if defined(__GLIBC__)
+#if PPR_HEAP_KEEPABLE
     return mallinfo2().keepcost;
 #else
     return 0;
+#endif
+}
+
+// The header decides before any C library header may have been included; here <cstdlib> has been.
+TEST(ProcessHeap, KeepableWhereverGlibcAllocates) {
+#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
+    EXPECT_TRUE(kHeapKeepable);
+#else
+    EXPECT_FALSE(kHeapKeepable);
 #endif
 }
 
@@ -48,12 +52,12 @@ TEST(ProcessHeap, TheUsersOwnTunablesStand) {
 
 // The control: left to itself, glibc gives a freed 16 MiB heap top back to the kernel.
 TEST(ProcessHeap, GlibcAloneGivesAFreedHeapTopBack) {
-    if (!kGlibcHeap) GTEST_SKIP() << "not glibc's allocator";
+    if (!kHeapKeepable) GTEST_SKIP() << "not glibc's allocator";
     EXPECT_LT(topKeptAfterAFrame(), size_t(1) << 20);
 }
 
 TEST(ProcessHeap, KeptMemoryStaysInTheHeap) {
-    if (!kGlibcHeap) {
+    if (!kHeapKeepable) {
         EXPECT_FALSE(keepFreedHeapMemory());
         GTEST_SKIP() << "not glibc's allocator";
     }
