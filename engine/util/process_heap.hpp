@@ -9,7 +9,15 @@
 #include <cstddef>  // defines __GLIBC__ (through the C library's features.h) before the test below
 
 // glibc's allocator, not a sanitizer's (which ignores mallopt): where keepFreedHeapMemory() can work.
-#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
+// GCC names a sanitizer with a macro, clang with __has_feature.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define PPR_SANITIZER_ALLOCATOR 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define PPR_SANITIZER_ALLOCATOR 1
+#endif
+#endif
+#if defined(__GLIBC__) && !defined(PPR_SANITIZER_ALLOCATOR)
 #define PPR_HEAP_KEEPABLE 1
 #else
 #define PPR_HEAP_KEEPABLE 0

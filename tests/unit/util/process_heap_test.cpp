@@ -34,7 +34,7 @@ size_t topKeptAfterAFrame() {
 
 // The header decides before any C library header may have been included; here <cstdlib> has been.
 TEST(ProcessHeap, KeepableWhereverGlibcAllocates) {
-#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
+#if defined(__GLIBC__) && !defined(PPR_SANITIZER_ALLOCATOR)
     EXPECT_TRUE(kHeapKeepable);
 #else
     EXPECT_FALSE(kHeapKeepable);
