@@ -8,6 +8,7 @@
 #include "ppr_reflect/ppr_reflect.h"
 #include "ssr_hiz/ssr_hiz_pass.hpp"
 #include "techniques/ssr_technique.hpp"
+#include "util/driver_defects.hpp"
 
 namespace ppr::app {
 namespace {
@@ -36,7 +37,14 @@ uint32_t reflectFlags(const FrameSettings& s) {  // the screen's reflection pass
 }  // namespace
 
 PprTechnique::PprTechnique(FrameServices& s)
-    : project_(s.ctx), reflect_(s.ctx), bounds_(s.ctx), reach_(s.ctx), fallback_(passes::makeSsrHizPass(s.ctx)) {}
+    : project_(s.ctx), reflect_(s.ctx), bounds_(s.ctx), reach_(s.ctx), fallback_(passes::makeSsrHizPass(s.ctx)),
+      deviceWarning_(util::lavapipeWidthWarning(s.ctx.info().type, s.ctx.info().name, s.ctx.info().subgroupSize)) {}
+
+std::string PprTechnique::warning(const FrameServices& services) const {
+    std::string budget = services.reflectors.budgetWarning();
+    if (deviceWarning_.empty()) return budget;
+    return budget.empty() ? deviceWarning_ : budget + "; " + deviceWarning_;
+}
 
 std::string PprTechnique::unsupported(VkExtent2D extent) const {
     // The intermediate encoding holds offsets up to 4095 px; larger frames render without PPR.

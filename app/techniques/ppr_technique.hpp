@@ -20,7 +20,7 @@ public:
     explicit PprTechnique(FrameServices& services);
     std::optional<graph::ImageHandle> addReflection(TechniqueFrame& frame) override;
     std::string unsupported(VkExtent2D extent) const override;
-    std::string warning(const FrameServices& services) const override { return services.reflectors.budgetWarning(); }
+    std::string warning(const FrameServices& services) const override;
 
 private:
     // Packs the frame's glass atlas and queues the region table's upload in `lists`, the atlas's clear
@@ -32,6 +32,7 @@ private:
     passes::PprBoundsPass bounds_;
     passes::PprReachPass reach_;
     std::unique_ptr<passes::SsrTracePass> fallback_;  // ssr-hiz's pass, over the non-planar tiles
+    std::string deviceWarning_;  // a driver known to project wrongly as configured (util/driver_defects.hpp)
 };
 
 }  // namespace ppr::app

@@ -168,7 +168,9 @@ std::unique_ptr<Context> Context::create(const ContextOptions& options) {
 
     VkPhysicalDeviceProperties props;
     vkGetPhysicalDeviceProperties(ctx->physical_, &props);
+    VkPhysicalDeviceVulkan11Properties props11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_PROPERTIES};
     VkPhysicalDeviceDriverProperties driverProps{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+    driverProps.pNext = &props11;
     VkPhysicalDeviceProperties2 props2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
     props2.pNext = &driverProps;
     vkGetPhysicalDeviceProperties2(ctx->physical_, &props2);
@@ -181,6 +183,7 @@ std::unique_ptr<Context> Context::create(const ContextOptions& options) {
                                   std::to_string(VK_API_VERSION_PATCH(props.apiVersion));
     ctx->info_.timestampPeriodNs = props.limits.timestampPeriod;
     ctx->info_.subPixelPrecisionBits = props.limits.subPixelPrecisionBits;
+    ctx->info_.subgroupSize = props11.subgroupSize;
     if (props.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU && !util::heapTunedByUser(std::getenv("GLIBC_TUNABLES")))
         ctx->info_.heapKept = util::keepFreedHeapMemory();
 

@@ -30,6 +30,7 @@ struct DeviceInfo {
     float timestampPeriodNs = 1.0f;
     uint32_t subPixelPrecisionBits = 4;  // how finely the rasterizer snaps vertices (the ray-traced reference's rt_coverage=raster)
     uint32_t timestampValidBits = 0;
+    uint32_t subgroupSize = 0;  // lanes per subgroup (on lavapipe its SIMD row: util/driver_defects.hpp)
     // A CPU device: the process keeps the memory it frees rather than return it to the kernel, which
     // the driver's per-frame binning would fault in again (util/process_heap.hpp).
     bool heapKept = false;

@@ -11,11 +11,6 @@
 namespace ppr::test {
 namespace {
 
-nlohmann::json readJson(const std::filesystem::path& p) {
-    std::ifstream f(p);
-    return nlohmann::json::parse(f);
-}
-
 // `ppr compare --validation ARGS --out DIR` on a path: its metrics.json (the test fails on a non-zero
 // exit or any validation error).
 nlohmann::json validatedCompare(const std::filesystem::path& dir, const std::string& args) {

@@ -11,11 +11,6 @@
 namespace ppr::test {
 namespace {
 
-nlohmann::json readJson(const std::filesystem::path& p) {
-    std::ifstream f(p);
-    return nlohmann::json::parse(f);
-}
-
 TEST(Cli, CaptureEveryNamedCameraWithValidation) {
     auto dir = tempDir("cli-all");
     RunResult r = runPpr("capture --validation --size 320x180 --frames 2 --out " + dir.string());

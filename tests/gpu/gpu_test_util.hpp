@@ -5,11 +5,13 @@
 #include "cli/scene_source.hpp"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <optional>
 #include <string>
@@ -113,6 +115,12 @@ private:
     const char* name_;
     std::optional<std::string> before_;
 };
+
+// A JSON file the ppr executable wrote (report.json, metrics.json).
+inline nlohmann::json readJson(const std::filesystem::path& p) {
+    std::ifstream f(p);
+    return nlohmann::json::parse(f);
+}
 
 inline std::filesystem::path tempDir(const std::string& name) {
     auto dir = std::filesystem::temp_directory_path() / ("ppr-test-" + name + "-" + std::to_string(::getpid()));
