@@ -1,3 +1,5 @@
+// util/driver_defects: which devices get PPR's driver warning (lavapipe at a width other than its
+// default 8 lanes) and that the line names the setting and the damage.
 #include "util/driver_defects.hpp"
 
 #include <gtest/gtest.h>
