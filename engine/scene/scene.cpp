@@ -11,6 +11,12 @@ const NamedCamera* Scene::findCamera(const std::string& name) const {
     return nullptr;
 }
 
+bool Scene::opaqueMaterialEmits() const {
+    for (const Material& m : materials)
+        if (!m.transparent && m.emissiveFactor != glm::vec3(0.0f)) return true;
+    return false;
+}
+
 namespace {
 
 // All of the draw's world-space vertices lie on r's plane and inside its rectangle (both ± tolerance).

@@ -86,6 +86,9 @@ struct Scene {
     glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  // world space, all draws (at rest)
 
     const NamedCamera* findCamera(const std::string& name) const;
+    // Whether an opaque material emits (a non-zero emissive factor; the texture only multiplies it).
+    // Only then does the G-buffer need its emissive target: a glass pane emits in the glass pass.
+    bool opaqueMaterialEmits() const;
 };
 
 struct LoadOptions {

@@ -26,7 +26,7 @@ graph::ImageHandle EnvProbePass::add(graph::RenderGraph& g, const std::array<Fra
     const VkExtent2D extent = faces[0].extent;
     const graph::ImageHandle shadowMap = shadow_.add(g, faces[0], shadowRes);
     // One G-buffer and one colour image, rewritten face after face (as the planar reference does per plane).
-    GBuffer gb = GBufferPass::createTargets(g, "env.probe.gbuffer", extent);
+    GBuffer gb = gbuffer_.createTargets(g, "env.probe.gbuffer", extent);
     graph::ImageHandle lit = g.createImage("env.probe.color", {extent.width, extent.height, LightingPass::kColorFormat, 1});
     for (uint32_t face = 0; face < kFaces; ++face) {
         const FrameInputs& in = faces[face];

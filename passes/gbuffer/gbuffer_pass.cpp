@@ -1,30 +1,34 @@
 #include "gbuffer/gbuffer_pass.hpp"
 
 #include "gbuffer_frag.h"
+#include "gbuffer_no_emissive_frag.h"
 #include "gbuffer_vert.h"
 #include "gpu/scene_data.h"
 
 #include <stdexcept>
+#include <vector>
 
 namespace ppr::passes {
 
-GBufferPass::GBufferPass(const vk::Context& ctx, const gpu::GpuScene& scene) : ctx_(ctx) {
+GBufferPass::GBufferPass(const vk::Context& ctx, const gpu::GpuScene& scene) : ctx_(ctx), emissive_(scene.cpu().opaqueMaterialEmits()) {
     // Not a format Vulkan requires as a colour attachment, though every desktop driver and lavapipe render to it.
     VkFormatProperties emissive{};
     vkGetPhysicalDeviceFormatProperties(ctx.physicalDevice(), kEmissiveFormat, &emissive);
     constexpr VkFormatFeatureFlags kNeeded = VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT;
-    if ((emissive.optimalTilingFeatures & kNeeded) != kNeeded)
+    if (emissive_ && (emissive.optimalTilingFeatures & kNeeded) != kNeeded)
         throw std::runtime_error("device: cannot render to VK_FORMAT_B10G11R11_UFLOAT_PACK32 (the G-buffer's emissive target)");
+    std::vector<VkFormat> targets = {kNormalFormat, kAlbedoFormat, kMaterialFormat, kReflectorFormat};
+    if (emissive_) targets.push_back(kEmissiveFormat);
     shader::PipelineLayoutDesc layout;
     layout.stages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
     layout.pushConstantBytes = sizeof(gpu::DrawPush);
     layout.extraSets = {scene.textureSetLayout()};
     pipeline_ = shader::GraphicsPipelineBuilder(ctx, "gbuffer")
                     .vertex(PPR_SPIRV(gbuffer_vert))
-                    .fragment(PPR_SPIRV(gbuffer_frag))
+                    .fragment(emissive_ ? PPR_SPIRV(gbuffer_frag) : PPR_SPIRV(gbuffer_no_emissive_frag))
                     .layout(layout)
                     .vertexInput(sizeof(scene::Vertex), sceneVertexAttributes(false))
-                    .colorFormats({kNormalFormat, kAlbedoFormat, kMaterialFormat, kReflectorFormat, kEmissiveFormat})
+                    .colorFormats(targets)
                     .depth(kDepthFormat, true, true, VK_COMPARE_OP_GREATER)
                     .build();
     // The pre-pass leaves each pixel's nearest depth pushed slightly farther (reverse-Z: smaller), and
@@ -47,7 +51,7 @@ GBufferPass::GBufferPass(const vk::Context& ctx, const gpu::GpuScene& scene) : c
                            .build();
 }
 
-GBuffer GBufferPass::createTargets(graph::RenderGraph& g, const std::string& name, VkExtent2D extent) {
+GBuffer GBufferPass::createTargets(graph::RenderGraph& g, const std::string& name, VkExtent2D extent) const {
     const uint32_t w = extent.width, h = extent.height;
     GBuffer out;
     out.depth = g.createImage(name + ".depth", {w, h, kDepthFormat, 1});
@@ -55,7 +59,7 @@ GBuffer GBufferPass::createTargets(graph::RenderGraph& g, const std::string& nam
     out.albedo = g.createImage(name + ".albedo", {w, h, kAlbedoFormat, 1});
     out.material = g.createImage(name + ".material", {w, h, kMaterialFormat, 1});
     out.reflector = g.createImage(name + ".reflector", {w, h, kReflectorFormat, 1});
-    out.emissive = g.createImage(name + ".emissive", {w, h, kEmissiveFormat, 1});
+    if (emissive_) out.emissive = g.createImage(name + ".emissive", {w, h, kEmissiveFormat, 1});
     return out;
 }
 
@@ -70,7 +74,7 @@ GBuffer GBufferPass::add(graph::RenderGraph& g, const FrameInputs& in, const std
             data.material = b.colorAttachment(out.material, graph::LoadOp::Clear, {{1.0f, 0.0f, 0.0f, 0.0f}});
             VkClearColorValue zero{};
             data.reflector = b.colorAttachment(out.reflector, graph::LoadOp::Clear, zero);
-            data.emissive = b.colorAttachment(out.emissive, graph::LoadOp::Clear, {{0.0f, 0.0f, 0.0f, 0.0f}});
+            if (out.emissive.valid()) data.emissive = b.colorAttachment(out.emissive, graph::LoadOp::Clear, {{0.0f, 0.0f, 0.0f, 0.0f}});
             data.depth = b.depthAttachment(out.depth, in.depthPrepass ? graph::LoadOp::Load : graph::LoadOp::Clear, 0.0f);
         },
         [this, in](const GBuffer&, graph::PassContext& pc) {

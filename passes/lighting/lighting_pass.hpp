@@ -16,7 +16,8 @@ public:
 
 private:
     const vk::Context& ctx_;
-    shader::Pipeline pipeline_;
+    // With the G-buffer's emissive target added, and without one (GBuffer::emissive invalid).
+    shader::Pipeline pipeline_, noEmissivePipeline_;
 };
 
 }  // namespace ppr::passes

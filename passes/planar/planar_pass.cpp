@@ -33,7 +33,7 @@ PlanarOutputs PlanarPass::add(graph::RenderGraph& g, const FrameInputs& in, cons
         out.glass = addClearPass(g, in, "planar.glass.clear", g.createImage("planar.glass", {size, size, GlassReflectPass::kFormat, 1}), {});
     }
     if (views.empty()) return out;
-    GBuffer mirrored = GBufferPass::createTargets(g, "planar.gbuffer", in.extent);
+    GBuffer mirrored = gbuffer_.createTargets(g, "planar.gbuffer", in.extent);
     graph::ImageHandle mirroredColor = g.createImage("planar.color", {in.extent.width, in.extent.height, LightingPass::kColorFormat, 1});
     for (const PlanarView& v : views) {
         // Pass names "planar.<step>.<plane group>", one timing row per plane.

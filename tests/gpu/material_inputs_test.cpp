@@ -99,6 +99,24 @@ TEST(Emissive, BrightensTheSurfaceAndItsReflections) {
     EXPECT_EQ(plain.ctx->validationErrors() + glowing.ctx->validationErrors(), 0u);
 }
 
+// The G-buffer writes its emissive target, and the lighting pass reads it, only for a scene with an
+// opaque material that emits: the default scene has none (four colour targets), the glowing one five.
+// The pictures without it are the old ones bit for bit (the Golden.* captures, recorded before).
+TEST(Emissive, TheGBufferHasAnEmissiveTargetOnlyWhereAnOpaqueMaterialEmits) {
+    GpuFixture plain{scene::loadGltf(PPR_DEFAULT_SCENE_FILE)}, glowing{glowingRed()};
+    EXPECT_FALSE(plain.scene.opaqueMaterialEmits());
+    EXPECT_TRUE(glowing.scene.opaqueMaterialEmits());
+    for (GpuFixture* f : {&plain, &glowing}) {
+        f->headless->setTechnique("planar");  // the reference's mirrored G-buffers too
+        const std::string dot = f->headless->capture(f->camera("puddles"), kSize, 1, true).dot;
+        const bool emits = f == &glowing;
+        EXPECT_NE(dot.find("gbuffer.albedo"), std::string::npos);
+        EXPECT_EQ(dot.find("\"gbuffer.emissive") != std::string::npos, emits);
+        EXPECT_EQ(dot.find("planar.gbuffer.emissive") != std::string::npos, emits);
+        EXPECT_EQ(f->ctx->validationErrors(), 0u);
+    }
+}
+
 TEST(Emissive, PlanarAndRayTracedReferencesAgreeOnGlowingSurfaces) {
     PPR_SKIP_WITHOUT_RAY_QUERY();
     expectReferencesAgree(glowingRed(), "glowing paint");

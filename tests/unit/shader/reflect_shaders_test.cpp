@@ -8,6 +8,7 @@
 #include "gbuffer_frag.h"
 #include "gbuffer_vert.h"
 #include "lighting_comp.h"
+#include "lighting_no_emissive_comp.h"
 #include "ppr_project_comp.h"
 #include "shadow_vert.h"
 #include "tonemap_frag.h"
@@ -63,6 +64,9 @@ TEST(ReflectShaders, LightingSamplersAndStorageImage) {
     EXPECT_EQ(typesOf(r, 0), (std::vector<VkDescriptorType>{UBO, CIS, CIS, CIS, CIS, CIS, SI, CIS}));  // then gbuffer.emissive
     EXPECT_EQ(r.sets.at(0).at(0).type, UBO);
     EXPECT_FALSE(r.pushConstantBytes.has_value());
+    // The variant for a G-buffer without the emissive target: the same bindings but that one.
+    const ReflectedLayout plain = reflectSpirv(words(lighting_no_emissive_comp), "lighting_no_emissive.comp");
+    EXPECT_EQ(typesOf(plain, 0), (std::vector<VkDescriptorType>{UBO, CIS, CIS, CIS, CIS, CIS, SI}));
 }
 
 TEST(ReflectShaders, GBufferStagesMergeWithBindlessSet) {
