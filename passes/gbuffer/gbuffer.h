@@ -9,7 +9,7 @@
 //                         a = a moving draw's motion slot / 255 (gpu/scene_data.h MotionData; 0 = still)
 //   3 reflector R16_UINT  reflector index + 1 of the surface's reflector rectangle, 0 = none
 //   4 emissive  B10G11R11 UFLOAT  rgb = emitted radiance (glTF emissive × KHR_materials_emissive_strength)
-//               only when an opaque material emits (GBufferPass::emissive); else four targets
+//               only when an opaque material emits (GBufferPass::emissive_); else four targets
 // Depth: D32, reverse-Z (1 = near, 0 = sky).
 PPR_CONST(uint, kGBufferNormal, 0u)
 PPR_CONST(uint, kGBufferAlbedo, 1u)

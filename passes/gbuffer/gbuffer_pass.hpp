@@ -10,7 +10,7 @@ namespace ppr::passes {
 
 struct GBuffer {
     graph::ImageHandle depth, normal, albedo, material, reflector;
-    graph::ImageHandle emissive;  // invalid when no opaque material emits (GBufferPass::emissive)
+    graph::ImageHandle emissive;  // invalid when no opaque material emits (GBufferPass::emissive_)
 };
 
 class GBufferPass {
@@ -33,16 +33,15 @@ public:
     GBuffer add(graph::RenderGraph& g, const FrameInputs& in, const std::string& name = "gbuffer", const GBuffer* targets = nullptr) const;
     // New transient G-buffer images named "<name>.depth", "<name>.normal", ...
     GBuffer createTargets(graph::RenderGraph& g, const std::string& name, VkExtent2D extent) const;
-    // Whether the G-buffer has its emissive target: only for a scene with an opaque material that emits
-    // (scene::Scene::opaqueMaterialEmits). Without it the pass writes four targets and the lighting
-    // adds nothing, which is what it added before: the images are the same, the target's writes and
-    // reads saved (docs/performance.md).
-    bool emissive() const { return emissive_; }
 
 private:
     // The opaque, unmasked draws' depth into `depth` (cleared first); returns its new version.
     graph::ImageHandle addPrepass(graph::RenderGraph& g, const FrameInputs& in, const std::string& name, graph::ImageHandle depth) const;
     const vk::Context& ctx_;
+    // Whether the G-buffer has its emissive target: only for a scene with an opaque material that emits
+    // (scene::Scene::opaqueMaterialEmits). Without it the pass writes four targets and the lighting
+    // adds nothing, which is what it added before: the images are the same, the target's writes and
+    // reads saved (docs/performance.md).
     bool emissive_;
     shader::Pipeline pipeline_, prepassPipeline_;
 };
