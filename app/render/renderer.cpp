@@ -26,6 +26,7 @@ passes::TaaReflectionInputs taaReflectionInputs(const graph::Blackboard& board, 
     r.rimKeep = settings.taa.rimKeep;
     r.stillRange = settings.taa.stillRange;
     r.stillKeep = settings.taa.stillKeep;
+    r.movingEdge = settings.taa.movingEdge;
     r.threads = settings.taa.threads;
     return r;
 }

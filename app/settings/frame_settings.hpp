@@ -78,6 +78,7 @@ struct TaaSettings {         // owner: taa (passes/taa)
     bool stillSpread;        // with average: a still pixel's own spread over its run, not only the 3×3 box, decides a clip
     bool stillRange;         // with stillSpread: that spread is the run's luma range (else its moments)
     bool stillKeep;          // with average: a still pixel's reflection history is never rejected by its path's depth
+    bool movingEdge;         // virtual: a rejected history beside a slow moving draw's reflection restarts from the mean
     uint32_t threads;        // both resolves' invocations per 16x16 tile (passes/taa/taa_threads.hpp); 0: auto
 };
 

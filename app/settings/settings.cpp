@@ -249,6 +249,11 @@ const std::vector<SettingDecl>& settingDecls() {
                "path has this frame, unless a moving object is reflected there or beside: on a reflector's rim the jitter alone "
                "changes what the pixel reflects, and every phase is its history (0: a path depth outside the neighbourhood's "
                "rejects the history)"),
+        toggle("taa_moving_edge", "taa", [](FrameSettings& s) -> bool& { return s.taa.movingEdge; }, true,
+               "taa=1, reproject=virtual: beside a moving object's reflection, a pixel whose reflection history its path's depth "
+               "rejects, though its neighbours' paths span that depth, and which moved less than a pixel, restarts from the "
+               "neighbourhood's mean: the jitter flips it across the object's reflected edge, and one sample a frame "
+               "flickers (0: from its own jittered sample)"),
         widthSetting("taa_threads", "taa", [](FrameSettings& s) -> uint32_t& { return s.taa.threads; }, passes::kTaaThreadChoices,
                      "taa=1: invocations per 16x16 tile in both resolves, each a column of 256/threads pixels (auto: 16 on a CPU "
                      "device, where a workgroup costs per invocation; 256 on a GPU); the same images with any"),

@@ -62,6 +62,11 @@ PPR_CONST(float, kTaaParallaxPerMetre, 0.05f)
 // virtual: the history is another surface's (disoccluded) when the view depth it stored for its
 // virtual point differs from the expected one by more than this fraction.
 PPR_CONST(float, kTaaVirtualDepthTolerance, 0.02f)
+// taa_moving_edge=1 (virtual): beside a moving draw's reflection, a pixel whose history moved less than
+// this (pixels) and was rejected by its own depth, though within the neighbours' reflected depths,
+// restarts from the current neighbourhood's mean rather than from its one jittered sample (a faster
+// move makes a rejection a trail, which the sharp current sample replaces best).
+PPR_CONST(float, kTaaMovingEdgeMotion, 1.0f)
 
 PPR_BEGIN
 struct TaaReflectionPush {
@@ -73,9 +78,10 @@ struct TaaReflectionPush {
     uint rimKeep;       // taa_rim_keep with taa_average: a moving pixel without a reflection keeps its history (1) or not (0)
     uint stillRange;    // taa_still_range with taa_still_spread: the still run's luma range decides (1), or its moments (0)
     uint stillKeep;     // taa_still_keep with taa_average: a still pixel's history is never rejected by its path's depth (1)
+    uint movingEdge;    // taa_moving_edge: a rejected history beside a slow moving draw's reflection restarts from the mean (1)
 };
 PPR_END
-PPR_SIZE_CHECK(TaaReflectionPush, 32);
+PPR_SIZE_CHECK(TaaReflectionPush, 36);
 
 PPR_BEGIN
 struct TaaPush {

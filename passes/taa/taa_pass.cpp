@@ -63,6 +63,7 @@ TaaReflectionOutput TaaPass::addReflection(graph::RenderGraph& g, const FrameInp
     push.rimKeep = inputs.rimKeep ? 1u : 0u;
     push.stillRange = inputs.stillRange ? 1u : 0u;
     push.stillKeep = inputs.stillKeep ? 1u : 0u;
+    push.movingEdge = inputs.movingEdge ? 1u : 0u;
     const VkSampler nearest = in.samplers->nearestClamp;
     graph::ImageHandle shown, written;
     ComputePass pass(g, ctx_, "taa.reflection", reflectionPipelines_[inputs.average ? 1 : 0].get(inputs.threads));

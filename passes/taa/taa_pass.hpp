@@ -23,6 +23,7 @@ struct TaaReflectionInputs {
     bool rimKeep = true;                         // taa_rim_keep (TaaReflectionPush::rimKeep)
     bool stillRange = true;                      // taa_still_range (TaaReflectionPush::stillRange)
     bool stillKeep = true;                       // taa_still_keep (TaaReflectionPush::stillKeep)
+    bool movingEdge = true;                      // taa_moving_edge (TaaReflectionPush::movingEdge)
     uint32_t threads = 0;                        // taa_threads: invocations per tile (taa_threads.hpp); 0: the device's default
 };
 

@@ -208,6 +208,14 @@ void resolvePixel(ivec2 pix) {
             float feedback = historyFeedback(currentY.x, h.x);
 #endif
             resolved = mix(currentY, h, feedback);
+        } else if (hadReflection && movingNearby && pc.movingEdge != 0u && length((historyUv - uv) * frame.screenSize) < kTaaMovingEdgeMotion &&
+                   history.a >= min(expectedW, shortestPath * perPath) * (1.0 - kTaaVirtualDepthTolerance) &&
+                   history.a <= max(expectedW, longestPath * perPath) * (1.0 + kTaaVirtualDepthTolerance)) {
+            // taa_moving_edge=1: beside a slowly moving draw's reflection a history its depth rejects, yet
+            // one the neighbours' reflected depths span, is most likely the other side of an edge the
+            // jitter straddles, not a trail. Its colour is not trusted (the draw moved), but one jittered
+            // sample would flip across the edge every frame: the neighbourhood's mean stands in.
+            resolved = mean;
         }
     }
     vec3 rgb = expand(fromYCoCg(resolved));
