@@ -182,10 +182,11 @@ void resolvePixel(ivec2 pix) {
         // the pixel's own path from one side to the other every frame, and both sides are its history.
         // Beside a moving draw's reflection the pixel's own depth decides, as a disocclusion is likely.
         float perPath = dist > 0.0 ? expectedW / dist : 0.0;
-        bool range = !movingNearby;
-        float nearest = (range ? min(expectedW, shortestPath * perPath) : expectedW) * (1.0 - kTaaVirtualDepthTolerance);
-        float farthest = (range ? max(expectedW, longestPath * perPath) : expectedW) * (1.0 + kTaaVirtualDepthTolerance);
-        bool disoccluded = expectedW > 0.0 && history.a > kKnownDepth && (history.a < nearest || history.a > farthest);
+        float rangeNearest = min(expectedW, shortestPath * perPath) * (1.0 - kTaaVirtualDepthTolerance);
+        float rangeFarthest = max(expectedW, longestPath * perPath) * (1.0 + kTaaVirtualDepthTolerance);
+        bool withinRange = history.a >= rangeNearest && history.a <= rangeFarthest;
+        bool ownDepth = history.a >= expectedW * (1.0 - kTaaVirtualDepthTolerance) && history.a <= expectedW * (1.0 + kTaaVirtualDepthTolerance);
+        bool disoccluded = expectedW > 0.0 && history.a > kKnownDepth && !(movingNearby ? ownDepth : withinRange);
 #ifdef PPR_TAA_AVERAGE
         // A still run (the history at a texel centre: nothing moved there): only the jitter changed what
         // this pixel reflects, as on a reflector's rim, where one phase of the cycle sees past an edge
@@ -208,9 +209,7 @@ void resolvePixel(ivec2 pix) {
             float feedback = historyFeedback(currentY.x, h.x);
 #endif
             resolved = mix(currentY, h, feedback);
-        } else if (hadReflection && movingNearby && pc.movingEdge != 0u && length((historyUv - uv) * frame.screenSize) < kTaaMovingEdgeMotion &&
-                   history.a >= min(expectedW, shortestPath * perPath) * (1.0 - kTaaVirtualDepthTolerance) &&
-                   history.a <= max(expectedW, longestPath * perPath) * (1.0 + kTaaVirtualDepthTolerance)) {
+        } else if (hadReflection && movingNearby && withinRange && pc.movingEdge != 0u && length((historyUv - uv) * frame.screenSize) < kTaaMovingEdgeMotion) {
             // taa_moving_edge=1: beside a slowly moving draw's reflection a history its depth rejects, yet
             // one the neighbours' reflected depths span, is most likely the other side of an edge the
             // jitter straddles, not a trail. Its colour is not trusted (the draw moved), but one jittered
