@@ -6,6 +6,7 @@
 #include "gpu/scene_data.h"
 #include "common/reflector_data.h"
 #include "gbuffer/gbuffer.h"
+#include "common/normal_mapping.glsl"
 
 layout(set = 0, binding = 1, scalar) readonly buffer Draws { DrawData draws[]; };
 layout(set = 0, binding = 2, scalar) readonly buffer Materials { MaterialData materials[]; };
@@ -48,16 +49,9 @@ void main() {
     // view (planar reference) reverses winding, so there the back-facing side is the front.
     bool front = gl_FrontFacing != (frame.mirrored != 0u);
     vec3 n = normalize(front ? vNormal : -vNormal);
-    if (m.normalTex != kNoTexture) {
-        vec3 t = vTangent.xyz - n * dot(n, vTangent.xyz);
-        if (dot(t, t) > 1e-12) {
-            t = normalize(t);
-            vec3 b = cross(n, t) * (vTangent.w < 0.0 ? -1.0 : 1.0);
-            vec3 tn = texture(textures[m.normalTex], uv).xyz * 2.0 - 1.0;
-            tn.xy *= m.normalScale;
-            n = normalize(t * tn.x + b * tn.y + n * max(tn.z, 1e-3));
-        }
-    }
+    vec3 t, b;
+    if (m.normalTex != kNoTexture && normalMapFrame(n, vTangent, t, b))
+        n = mappedNormal(n, t, b, texture(textures[m.normalTex], uv).xyz, m.normalScale);
     outNormal = vec4(n, 1.0);
     outAlbedo = vec4(base.rgb, 1.0);
     outMaterial = vec4(clamp(m.roughness * mr.g, 0.02, 1.0), clamp(m.metallic * mr.b, 0.0, 1.0),

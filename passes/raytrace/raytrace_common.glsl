@@ -13,6 +13,7 @@
 #include "common/brdf.glsl"
 #include "common/reflection.h"
 #include "common/reflector_data.h"
+#include "common/normal_mapping.glsl"
 #include "gbuffer/gbuffer.h"
 #include "gpu/scene_data.h"
 #include "planar/planar.h"  // the tolerance of "visible in the main view", as the planar reference judges it
@@ -227,16 +228,9 @@ vec4 shadeHit(ReflectorData plane, vec3 n, ivec2 pix, vec3 origin, vec3 dir, flo
     // decides front faces), then the normal map in the interpolated tangent frame.
     bool front = dot(cross(h.p1 - h.p0, h.p2 - h.p0), dir) < 0.0;
     vec3 sn = normalize(front ? vNormal : -vNormal);
-    if (m.normalTex != kNoTexture) {
-        vec3 tg = vTangent.xyz - sn * dot(sn, vTangent.xyz);
-        if (dot(tg, tg) > 1e-12) {
-            tg = normalize(tg);
-            vec3 bt = cross(sn, tg) * (vTangent.w < 0.0 ? -1.0 : 1.0);
-            vec3 tn = sampleMaterial(m.normalTex, uv, footprint, vec4(0.5, 0.5, 1.0, 1.0)).xyz * 2.0 - 1.0;
-            tn.xy *= m.normalScale;
-            sn = normalize(tg * tn.x + bt * tn.y + sn * max(tn.z, 1e-3));
-        }
-    }
+    vec3 tg, bt;
+    if (m.normalTex != kNoTexture && normalMapFrame(sn, vTangent, tg, bt))
+        sn = mappedNormal(sn, tg, bt, sampleMaterial(m.normalTex, uv, footprint, vec4(0.5, 0.5, 1.0, 1.0)).xyz, m.normalScale);
     vec3 albedo = storedAlbedo(baseColor.rgb);
     float roughness = unorm8(clamp(m.roughness * mr.g, 0.02, 1.0)), metallic = unorm8(clamp(m.metallic * mr.b, 0.0, 1.0));
     vec3 shadingNormal = normalize(storedNormal(sn));
