@@ -212,6 +212,7 @@ FrameRecord Renderer::record(VkCommandBuffer cmd, uint32_t slot, const FrameRequ
         t.motionCap = settings.taa.motionCap;
         t.stillSpread = settings.taa.stillSpread;
         t.stillRange = settings.taa.stillRange;
+        t.movingFilter = settings.taa.movingFilter;
         t.threads = settings.taa.threads;
         const ReflectionDistance* path = board.find<ReflectionDistance>();
         if (path && settings.taa.reproject == Reproject::Virtual) t.reflectedPath = path->image;

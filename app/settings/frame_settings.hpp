@@ -79,6 +79,7 @@ struct TaaSettings {         // owner: taa (passes/taa)
     bool stillRange;         // with stillSpread: that spread is the run's luma range (else its moments)
     bool stillKeep;          // with average: a still pixel's reflection history is never rejected by its path's depth
     bool movingEdge;         // virtual: a rejected history beside a slow moving draw's reflection restarts from the mean
+    bool movingFilter;       // a moving draw's pixels blend the current frame filtered to their centre, not its jittered sample
     uint32_t threads;        // both resolves' invocations per 16x16 tile (passes/taa/taa_threads.hpp); 0: auto
 };
 

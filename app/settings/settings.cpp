@@ -254,6 +254,10 @@ const std::vector<SettingDecl>& settingDecls() {
                "rejects, though its neighbours' paths span that depth, and which moved less than a pixel, restarts from the "
                "neighbourhood's mean: the jitter flips it across the object's reflected edge, and one sample a frame "
                "flickers (0: from its own jittered sample)"),
+        toggle("taa_moving_filter", "taa", [](FrameSettings& s) -> bool& { return s.taa.movingFilter; }, true,
+               "taa=1: on and beside a moving object, the frame's TAA blends the current frame reconstructed at the pixel's "
+               "centre from its 3x3 jittered samples (a narrow Gaussian), not the one sample the jitter put there: an edge "
+               "the jitter moves across flickers less (0: the jittered sample)"),
         widthSetting("taa_threads", "taa", [](FrameSettings& s) -> uint32_t& { return s.taa.threads; }, passes::kTaaThreadChoices,
                      "taa=1: invocations per 16x16 tile in both resolves, each a column of 256/threads pixels (auto: 16 on a CPU "
                      "device, where a workgroup costs per invocation; 256 on a GPU); the same images with any"),

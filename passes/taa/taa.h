@@ -67,6 +67,11 @@ PPR_CONST(float, kTaaVirtualDepthTolerance, 0.02f)
 // restarts from the current neighbourhood's mean rather than from its one jittered sample (a faster
 // move makes a rejection a trail, which the sharp current sample replaces best).
 PPR_CONST(float, kTaaMovingEdgeMotion, 1.0f)
+// taa_moving_filter=1: on and beside a moving draw, the current frame enters the blend reconstructed at
+// the pixel's centre from the 3×3's jittered samples, weighted exp(−k·d²) by each sample's distance d
+// (pixels) from that centre. The Gaussian fit of a Blackman-Harris window is k = 2.29; this narrower one
+// scored closer to the supersampled reference on the bobbing ball (docs/temporal.md).
+PPR_CONST(float, kTaaMovingFilterSharpness, 4.0f)
 
 PPR_BEGIN
 struct TaaReflectionPush {
@@ -95,8 +100,9 @@ struct TaaPush {
     float motionCap;  // taa_motion_cap with taa_average: kTaaMotionCap, or 0 (off: the feedback alone)
     float stillSpread;  // taa_still_spread with taa_average: kTaaSpreadSigma, or 0 (off: the 3×3 box alone; the moments image is a stand-in)
     uint stillRange;    // taa_still_range with taa_still_spread: the still run's luma range decides (1), or its moments (0)
+    uint movingFilter;  // taa_moving_filter: a moving draw's pixels blend the current frame filtered to their centre (1)
 };
 PPR_END
-PPR_SIZE_CHECK(TaaPush, 24);
+PPR_SIZE_CHECK(TaaPush, 28);
 
 #endif

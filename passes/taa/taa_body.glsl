@@ -59,6 +59,24 @@ shared float tileReflectionWeight[kTile * kTile];
 shared vec3 tileReflection[kTile * kTile];  // the shown reflection where there is one, else 0
 #endif
 
+// taa_moving_filter: the current frame at the pixel's centre, from the 3×3's jittered samples (each lies
+// `jitter` away from its own pixel's centre, the projection having been shifted by it): one sample
+// a frame flips across a moving edge as the jitter cycles, and the history, which cannot keep a whole
+// cycle there as a still pixel does, takes a share of every flip.
+vec3 currentAtCentre(ivec2 local) {
+    vec2 jitter = frame.jitter.xy * 0.5 * frame.screenSize;  // NDC to pixels
+    vec3 sum = vec3(0.0);
+    float weights = 0.0;
+    for (int y = -1; y <= 1; ++y)
+        for (int x = -1; x <= 1; ++x) {
+            vec2 d = vec2(x, y) - jitter;
+            float w = exp(-kTaaMovingFilterSharpness * dot(d, d));
+            sum += w * tile[(local.y + y) * kTile + local.x + x].xyz;
+            weights += w;
+        }
+    return sum / weights;
+}
+
 // Resolves one pixel; `local` is where it is in the shared tile (its tile position + 1, for the border).
 void resolvePixel(ivec2 pix, ivec2 local) {
     ivec2 size = ivec2(frame.screenSize);
@@ -132,6 +150,12 @@ void resolvePixel(ivec2 pix, ivec2 local) {
     vec2 spread = firstSpread(currentY, pc.stillRange != 0u);
 #endif
     if (pc.historyValid != 0u && onScreen) {
+        // A moving draw's pixel (or one beside it, whose nearest neighbour moves) blends the current
+        // frame filtered to its centre, while the draw moves (its motion is exactly the identity when
+        // it stands still: scene_motion.cpp); the rest keep their jittered sample, whose whole cycle a
+        // still pixel's run averages.
+        bool objectMoves = slot != 0u && motions[slot].toPrevious != mat4(1.0);
+        vec3 current = pc.movingFilter != 0u && objectMoves ? currentAtCentre(local) : currentY;
         vec3 historyRgb = sampleCatmullRom(historyColor, historyUv);
 #ifndef PPR_TAA_SPLIT
         // Where both fetches coincide to rounding (1/1000 pixel: a still view) the mix is the surface's
@@ -142,7 +166,7 @@ void resolvePixel(ivec2 pix, ivec2 local) {
 #endif
         vec3 history = toYCoCg(compress(historyRgb));
 #ifdef PPR_TAA_AVERAGE
-        HistoryBlend blend = blendHistory(currentY, history, mean, sigma, historyUv, historySamples, historySpread, pc.stillSpread > 0.0,
+        HistoryBlend blend = blendHistory(current, history, mean, sigma, historyUv, historySamples, historySpread, pc.stillSpread > 0.0,
                                           motionFeedbackCap(historyUv, pc.motionCap), pc.stillSpread, pc.stillRange != 0u);
         history = blend.history;
         float feedback = blend.feedback;
@@ -150,9 +174,9 @@ void resolvePixel(ivec2 pix, ivec2 local) {
         spread = blend.spread;
 #else
         history = clipToBox(history, mean, kTaaClipSigma * sigma + vec3(1e-4));
-        float feedback = historyFeedback(currentY.x, history.x);
+        float feedback = historyFeedback(current.x, history.x);
 #endif
-        resolved = mix(currentY, history, feedback);
+        resolved = mix(current, history, feedback);
 #ifdef PPR_TAA_SPLIT
         // The weight is the surface's (Fresnel × reflectance): it follows the surface, clamped to its
         // neighbourhood as the colour is clipped.

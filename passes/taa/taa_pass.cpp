@@ -98,6 +98,7 @@ graph::ImageHandle TaaPass::add(graph::RenderGraph& g, const FrameInputs& in, gr
     push.motionCap = inputs.motionCap ? gpu::kTaaMotionCap : 0.0f;
     push.stillSpread = inputs.stillSpread ? gpu::kTaaSpreadSigma : 0.0f;
     push.stillRange = inputs.stillRange ? 1u : 0u;
+    push.movingFilter = inputs.movingFilter ? 1u : 0u;
     const VkSampler nearest = in.samplers->nearestClamp;
     graph::ImageHandle out;
     const bool split = inputs.shownReflection.has_value();

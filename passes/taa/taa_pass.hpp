@@ -43,6 +43,7 @@ struct TaaInputs {
     bool motionCap = true;  // taa_motion_cap (taa.h kTaaMotionCap)
     bool stillSpread = true;  // taa_still_spread (taa.h kTaaSpreadSigma)
     bool stillRange = true;   // taa_still_range (TaaPush::stillRange)
+    bool movingFilter = true;  // taa_moving_filter (TaaPush::movingFilter)
     uint32_t threads = 0;     // taa_threads: invocations per tile (taa_threads.hpp); 0: the device's default
 };
 

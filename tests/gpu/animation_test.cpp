@@ -199,6 +199,35 @@ TEST(Animation, MovingEdgeMeanCalmsAMovingReflectionsEdge) {
     std::filesystem::remove_all(dir);
 }
 
+// taa_moving_filter: the bobbing ball's edge pixels blend the current frame reconstructed at their
+// centre, not the one sample the jitter put on either side of the edge, and change less from frame to
+// frame. Measured on lavapipe (planar, puddles, 160x90, 24 frames): flicker 0.208 against 0.219
+// levels, the whole frame 37.23 against 37.24 dB. Where nothing moves (a strafe) no pixel takes the
+// filter: the frames' scores are the same to the last bit.
+TEST(Animation, MovingFilterCalmsAMovingObjectsEdgeAndLeavesAStillSceneAlone) {
+    auto dir = tempDir("moving-filter");
+    RunResult r = runPpr("compare --validation --path animate --frames 24 --camera puddles --size 160x90 --technique planar@taa=1 "
+                         "--technique planar@taa=1,taa_moving_filter=0 --out " + dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    nlohmann::json m = nlohmann::json::parse(std::ifstream(dir / "metrics.json"));
+    const nlohmann::json on = m["techniques"]["planar@taa=1"]["temporal"];
+    const nlohmann::json off = m["techniques"]["planar@taa=1,taa_moving_filter=0"]["temporal"];
+    std::printf("puddles, ball bobbing: flicker %.4f against %.4f levels, whole frame %.3f against %.3f dB\n", on["flicker"].get<double>(),
+                off["flicker"].get<double>(), on["psnr_db_mean"].get<double>(), off["psnr_db_mean"].get<double>());
+    EXPECT_LT(on["flicker"].get<double>(), off["flicker"].get<double>() - 0.005);
+    EXPECT_GT(on["psnr_db_mean"].get<double>(), off["psnr_db_mean"].get<double>() - 0.1);
+
+    r = runPpr("compare --validation --path strafe --frames 8 --camera puddles --size 96x54 --technique ppr@taa=1 "
+               "--technique ppr@taa=1,taa_moving_filter=0 --out " + dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    m = nlohmann::json::parse(std::ifstream(dir / "metrics.json"));
+    const nlohmann::json still = m["techniques"]["ppr@taa=1"]["temporal"];
+    const nlohmann::json stillOff = m["techniques"]["ppr@taa=1,taa_moving_filter=0"]["temporal"];
+    for (const char* key : {"psnr_db_mean", "reflector_psnr_db_mean", "scored_psnr_db_mean"})
+        EXPECT_EQ(still[key].get<double>(), stillOff[key].get<double>()) << key;
+    std::filesystem::remove_all(dir);
+}
+
 // The camera stands still while the scene moves: flicker is the change the reference does not make
 // (meanAbsoluteExcessChange), so the ball's own motion is not counted.
 TEST(Animation, AnimatePathRunsTheClockOnAStillCamera) {
