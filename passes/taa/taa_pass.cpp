@@ -1,6 +1,7 @@
 #include "taa/taa_pass.hpp"
 
 #include "common/compute_pass.hpp"
+#include "common/transfer_batch.hpp"
 #include "taa/taa.h"
 #include "taa/taa_threads.hpp"
 #include "taa_average_comp.h"
@@ -17,11 +18,18 @@ constexpr WorkgroupWidths kWidths{kTaaThreadChoices, gpu::kTaaThreads, gpu::kTaa
 static_assert(kWidths.valid(gpu::kTaaTileSize * gpu::kTaaTileSize, gpu::kTaaTileSize),
               "taa_threads: every choice must give each invocation whole columns' rows of the tile, and hold the defaults");
 
-// A still run's range or moments (taa_color.glsl), or with taa_still_spread=0 stand-ins the shader never touches
-// (its stillSpread is 0): no history image, and no store per pixel.
-void bindSpread(graph::RenderGraph& g, ComputePass& pass, const std::optional<graph::HistoryImage>& spread, const char* standInName,
-                graph::ImageHandle unread, VkSampler nearest) {
-    if (spread) pass.sampled(spread->previous, nearest).storageWrite(spread->current, nullptr);
+// An image the pass writes: over all of it, or, `cleared` first, where it stores (the rest kept).
+void bindOutput(ComputePass& pass, graph::ImageHandle image, bool cleared, graph::ImageHandle* written) {
+    if (cleared) pass.storageReadWrite(image, written);
+    else pass.storageWrite(image, written);
+}
+
+// A still run's range or moments (taa_color.glsl; `current` is spread->current or its cleared version), or
+// with taa_still_spread=0 stand-ins the shader never touches (its stillSpread is 0): no history image, and
+// no store per pixel.
+void bindSpread(graph::RenderGraph& g, ComputePass& pass, const std::optional<graph::HistoryImage>& spread, graph::ImageHandle current,
+                bool cleared, const char* standInName, graph::ImageHandle unread, VkSampler nearest) {
+    if (spread) bindOutput(pass.sampled(spread->previous, nearest), current, cleared, nullptr);
     else pass.sampled(unread, nearest).storageWrite(g.createImage(standInName, {1, 1, TaaPass::kSamplesFormat, 1}), nullptr);
 }
 
@@ -64,6 +72,19 @@ TaaReflectionOutput TaaPass::addReflection(graph::RenderGraph& g, const FrameInp
     push.stillRange = inputs.stillRange ? 1u : 0u;
     push.stillKeep = inputs.stillKeep ? 1u : 0u;
     push.movingEdge = inputs.movingEdge ? 1u : 0u;
+    // Where clears are transfers (a memset on a CPU device), the history images are cleared first and a
+    // pixel with no reflection and nothing kept, most of the screen, stores nothing to them; a GPU's
+    // compute clear would write what those stores write, so there the pass writes every pixel.
+    graph::ImageHandle historyOut = h.current, samplesOut = samples ? samples->current : graph::ImageHandle{},
+                       spreadOut = spread ? spread->current : graph::ImageHandle{};
+    if (!in.computeClear) {
+        TransferBatch clears;  // one transfer pass for all three
+        clears.clearImage(historyOut, VkClearColorValue{}, "taa.reflection.clear", &historyOut);
+        if (samples) clears.clearImage(samplesOut, VkClearColorValue{}, "taa.reflection.clear", &samplesOut);
+        if (spread) clears.clearImage(spreadOut, VkClearColorValue{}, "taa.reflection.clear", &spreadOut);
+        clears.add(g, "taa.reflection.clear");
+        push.clearedNone = 1u;
+    }
     const VkSampler nearest = in.samplers->nearestClamp;
     graph::ImageHandle shown, written;
     ComputePass pass(g, ctx_, "taa.reflection", reflectionPipelines_[inputs.average ? 1 : 0].get(inputs.threads));
@@ -73,12 +94,13 @@ TaaReflectionOutput TaaPass::addReflection(graph::RenderGraph& g, const FrameInp
         .sampled(inputs.normal, nearest)
         .sampled(inputs.distance.value_or(inputs.depth), nearest)  // unread without a distance (hasDistance 0)
         .sampled(h.previous, in.samplers->linearClamp)
-        .storageWrite(g.createImage("taa.reflection.shown", {in.extent.width, in.extent.height, kHistoryFormat, 1}), &shown)
-        .storageWrite(h.current, &written)
-        .hostStorage(in.motion);  // a moving reflected point's motion slot (the path image's tag)
+        .storageWrite(g.createImage("taa.reflection.shown", {in.extent.width, in.extent.height, kHistoryFormat, 1}), &shown);
+    const bool cleared = push.clearedNone != 0u;
+    bindOutput(pass, historyOut, cleared, &written);
+    pass.hostStorage(in.motion);  // a moving reflected point's motion slot (the path image's tag)
     if (samples) {
-        pass.sampled(samples->previous, in.samplers->linearClamp).storageWrite(samples->current, nullptr);
-        bindSpread(g, pass, spread, "taa.reflection.spread.unused", inputs.depth, nearest);
+        bindOutput(pass.sampled(samples->previous, in.samplers->linearClamp), samplesOut, cleared, nullptr);
+        bindSpread(g, pass, spread, spreadOut, cleared, "taa.reflection.spread.unused", inputs.depth, nearest);
     }
     pass.push(push).dispatch(in.extent, gpu::kTaaTileSize);
     return {shown, written};
@@ -117,7 +139,7 @@ graph::ImageHandle TaaPass::add(graph::RenderGraph& g, const FrameInputs& in, gr
     if (samples) {
         pass.sampled(samples->previous, in.samplers->linearClamp).storageWrite(samples->current, nullptr);
         if (split) pass.sampled(inputs.reflectionHistory.value_or(inputs.depth), nearest);  // unread without one (pc.keptReflection 0)
-        bindSpread(g, pass, spread, "taa.color.spread.unused", inputs.depth, nearest);
+        bindSpread(g, pass, spread, spread ? spread->current : graph::ImageHandle{}, false, "taa.color.spread.unused", inputs.depth, nearest);
     }
     push.keptReflection = split && samples && inputs.reflectionHistory ? 1u : 0u;
     pass.push(push).dispatch(in.extent, gpu::kTaaTileSize);

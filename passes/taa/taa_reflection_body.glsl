@@ -91,11 +91,14 @@ void resolvePixel(ivec2 pix) {
             }
         }
         if (kept.a <= 0.0) keptSamples = vec2(0.0);
+        // Most of the screen: the cleared images already hold the zeros (the three stores were 40 % of
+        // the pass on lavapipe, docs/temporal.md "Cost").
+        if (pc.clearedNone != 0u && kept == vec4(0.0)) return;
         imageStore(outHistory, pix, kept);
         imageStore(outSamples, pix, vec4(keptSamples, 0.0, 0.0));
         if (pc.stillSpread > 0.0) imageStore(outSpread, pix, keptSamples.x > 0.0 ? texelFetch(historySpread, pix, 0) : vec4(0.0));
 #else
-        imageStore(outHistory, pix, vec4(0.0));
+        if (pc.clearedNone == 0u) imageStore(outHistory, pix, vec4(0.0));
 #endif
         return;
     }
