@@ -84,8 +84,8 @@ struct TaaReflectionPush {
     uint stillRange;    // taa_still_range with taa_still_spread: the still run's luma range decides (1), or its moments (0)
     uint stillKeep;     // taa_still_keep with taa_average: a still pixel's history is never rejected by its path's depth (1)
     uint movingEdge;    // taa_moving_edge: a rejected history beside a slow moving draw's reflection restarts from the mean (1)
-    // 1: the history images were cleared to 0 before the pass (a transfer clear: a memset on a CPU device),
-    // so a pixel that would store 0 in all of them (no reflection, nothing kept) stores nothing there
+    // 1: the shown image and the history images were cleared to 0 before the pass (a transfer clear: a
+    // memset on a CPU device), so a pixel that would store 0 (no reflection, nothing kept) stores nothing
     uint clearedNone;
 };
 PPR_END

@@ -72,13 +72,15 @@ TaaReflectionOutput TaaPass::addReflection(graph::RenderGraph& g, const FrameInp
     push.stillRange = inputs.stillRange ? 1u : 0u;
     push.stillKeep = inputs.stillKeep ? 1u : 0u;
     push.movingEdge = inputs.movingEdge ? 1u : 0u;
-    // Where clears are transfers (a memset on a CPU device), the history images are cleared first and a
-    // pixel with no reflection and nothing kept, most of the screen, stores nothing to them; a GPU's
-    // compute clear would write what those stores write, so there the pass writes every pixel.
+    // Where clears are transfers (a memset on a CPU device), the images the pass writes are cleared first
+    // and a pixel with no reflection and nothing kept, most of the screen, stores nothing to them; a
+    // GPU's compute clear would write what those stores write, so there the pass writes every pixel.
+    graph::ImageHandle shownOut = g.createImage("taa.reflection.shown", {in.extent.width, in.extent.height, kHistoryFormat, 1});
     graph::ImageHandle historyOut = h.current, samplesOut = samples ? samples->current : graph::ImageHandle{},
                        spreadOut = spread ? spread->current : graph::ImageHandle{};
     if (!in.computeClear) {
-        TransferBatch clears;  // one transfer pass for all three
+        TransferBatch clears;  // one transfer pass for all of them
+        clears.clearImage(shownOut, VkClearColorValue{}, "taa.reflection.clear", &shownOut);
         clears.clearImage(historyOut, VkClearColorValue{}, "taa.reflection.clear", &historyOut);
         if (samples) clears.clearImage(samplesOut, VkClearColorValue{}, "taa.reflection.clear", &samplesOut);
         if (spread) clears.clearImage(spreadOut, VkClearColorValue{}, "taa.reflection.clear", &spreadOut);
@@ -93,9 +95,9 @@ TaaReflectionOutput TaaPass::addReflection(graph::RenderGraph& g, const FrameInp
         .sampled(inputs.depth, nearest)
         .sampled(inputs.normal, nearest)
         .sampled(inputs.distance.value_or(inputs.depth), nearest)  // unread without a distance (hasDistance 0)
-        .sampled(h.previous, in.samplers->linearClamp)
-        .storageWrite(g.createImage("taa.reflection.shown", {in.extent.width, in.extent.height, kHistoryFormat, 1}), &shown);
+        .sampled(h.previous, in.samplers->linearClamp);
     const bool cleared = push.clearedNone != 0u;
+    bindOutput(pass, shownOut, cleared, &shown);
     bindOutput(pass, historyOut, cleared, &written);
     pass.hostStorage(in.motion);  // a moving reflected point's motion slot (the path image's tag)
     if (samples) {

@@ -66,7 +66,9 @@ void resolvePixel(ivec2 pix) {
     if (any(greaterThanEqual(pix, size))) return;
     vec4 current = texelFetch(reflectionTex, pix, 0);
     if (current.a == kReflectionNone) {
-        imageStore(outShown, pix, current);
+        // pc.clearedNone: the cleared images already hold the zeros this pixel would store (most of the
+        // screen; those stores were 40 % of the pass on lavapipe, docs/temporal.md "Cost").
+        if (pc.clearedNone == 0u || current != vec4(0.0)) imageStore(outShown, pix, current);
 #ifdef PPR_TAA_AVERAGE
         // A pixel that the jitter takes off a reflector's rim keeps its reflection's history (and, still,
         // its still run) for the frames that bring the reflection back. Still, that is its own texel; in
@@ -91,8 +93,6 @@ void resolvePixel(ivec2 pix) {
             }
         }
         if (kept.a <= 0.0) keptSamples = vec2(0.0);
-        // Most of the screen: the cleared images already hold the zeros (the three stores were 40 % of
-        // the pass on lavapipe, docs/temporal.md "Cost").
         if (pc.clearedNone != 0u && kept == vec4(0.0)) return;
         imageStore(outHistory, pix, kept);
         imageStore(outSamples, pix, vec4(keptSamples, 0.0, 0.0));

@@ -63,8 +63,9 @@ TEST(ImageClear, ComputeAndTransferClearsGiveIdenticalFrames) {
     EXPECT_EQ(f.ctx->validationErrors(), 0u);
 }
 
-// Where clears are transfers, taa.reflection clears its history images first and a pixel with no
-// reflection and nothing kept stores nothing to them. Under a strafe the history's ping-pong image
+// Where clears are transfers, taa.reflection clears the images it writes (the shown reflection and its
+// histories) first and a pixel with no reflection and nothing kept stores nothing to them (without the
+// shown image's clear the graph refuses the frame). Under a strafe the history's ping-pong image
 // still holds what the frame before last kept there: without the clear frames 3 onwards differ at 160x90
 // (checked on lavapipe with the clear taken out; at 96x54 one variant missed it). Every frame of both
 // shader variants (taa_average) must be the bytes the compute clear, which makes the pass store every
