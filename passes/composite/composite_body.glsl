@@ -37,9 +37,11 @@ void main() {
     // the frame's TAA mixes a history fetched with the reflection's motion into the surface's.
     float reflectionWeight = 0.0;
 #ifdef PPR_COMPOSITE_REFLECTION
-    vec4 reflection = texelFetch(reflectionTex, pix, 0);
     vec4 material = texelFetch(materialTex, pix, 0);
     bool reflective = id != 0u || material.b > 0.5;  // gbuffer.h: material b = reflective flag
+    // Fetched only where it can be blended (and where a debug view draws it, below).
+    bool drawsReflection = reflective || frame.debugView == kDebugIntermediate || frame.debugView == kDebugHoles || frame.debugView == kDebugTiles;
+    vec4 reflection = drawsReflection ? texelFetch(reflectionTex, pix, 0) : vec4(0.0);
     if (reflective && reflection.a > 0.0) {
         // The reflection replaces the lit surface by the Fresnel term (Schlick, F0 from the material)
         // times the reflector's reflectance (or, off reflector rectangles, the surface's).
