@@ -24,12 +24,11 @@ void bindOutput(ComputePass& pass, graph::ImageHandle image, bool cleared, graph
     else pass.storageWrite(image, written);
 }
 
-// A still run's range or moments (taa_color.glsl; `current` is spread->current or its cleared version), or
-// with taa_still_spread=0 stand-ins the shader never touches (its stillSpread is 0): no history image, and
-// no store per pixel.
-void bindSpread(graph::RenderGraph& g, ComputePass& pass, const std::optional<graph::HistoryImage>& spread, graph::ImageHandle current,
-                bool cleared, const char* standInName, graph::ImageHandle unread, VkSampler nearest) {
-    if (spread) bindOutput(pass.sampled(spread->previous, nearest), current, cleared, nullptr);
+// A still run's range or moments (taa_color.glsl), or with taa_still_spread=0 stand-ins the shader never
+// touches (its stillSpread is 0): no history image, and no store per pixel.
+void bindSpread(graph::RenderGraph& g, ComputePass& pass, const std::optional<graph::HistoryImage>& spread, bool cleared,
+                const char* standInName, graph::ImageHandle unread, VkSampler nearest) {
+    if (spread) bindOutput(pass.sampled(spread->previous, nearest), spread->current, cleared, nullptr);
     else pass.sampled(unread, nearest).storageWrite(g.createImage(standInName, {1, 1, TaaPass::kSamplesFormat, 1}), nullptr);
 }
 
@@ -55,7 +54,7 @@ uint32_t TaaPass::autoThreads(const vk::DeviceInfo& device) { return kWidths.def
 
 TaaReflectionOutput TaaPass::addReflection(graph::RenderGraph& g, const FrameInputs& in, graph::HistoryStore& history,
                                           const TaaReflectionInputs& inputs) const {
-    const graph::HistoryImage h = g.history(history, kReflectionHistoryName, {in.extent.width, in.extent.height, kHistoryFormat, 1});
+    graph::HistoryImage h = g.history(history, kReflectionHistoryName, {in.extent.width, in.extent.height, kHistoryFormat, 1});
     std::optional<graph::HistoryImage> samples;
     std::optional<graph::HistoryImage> spread;
     if (inputs.average) {
@@ -74,16 +73,13 @@ TaaReflectionOutput TaaPass::addReflection(graph::RenderGraph& g, const FrameInp
     push.movingEdge = inputs.movingEdge ? 1u : 0u;
     // Where clears are transfers (a memset on a CPU device), the images the pass writes are cleared first
     // and a pixel with no reflection and nothing kept, most of the screen, stores nothing to them; a
-    // GPU's compute clear would write what those stores write, so there the pass writes every pixel.
+    // GPU's compute clear would write what those stores write, so there the pass writes every pixel. The
+    // cleared versions replace the images' current versions in place.
     graph::ImageHandle shownOut = g.createImage("taa.reflection.shown", {in.extent.width, in.extent.height, kHistoryFormat, 1});
-    graph::ImageHandle historyOut = h.current, samplesOut = samples ? samples->current : graph::ImageHandle{},
-                       spreadOut = spread ? spread->current : graph::ImageHandle{};
     if (!in.computeClear) {
         TransferBatch clears;  // one transfer pass for all of them
-        clears.clearImage(shownOut, VkClearColorValue{}, "taa.reflection.clear", &shownOut);
-        clears.clearImage(historyOut, VkClearColorValue{}, "taa.reflection.clear", &historyOut);
-        if (samples) clears.clearImage(samplesOut, VkClearColorValue{}, "taa.reflection.clear", &samplesOut);
-        if (spread) clears.clearImage(spreadOut, VkClearColorValue{}, "taa.reflection.clear", &spreadOut);
+        for (graph::ImageHandle* image : {&shownOut, &h.current, samples ? &samples->current : nullptr, spread ? &spread->current : nullptr})
+            if (image) clears.clearImage(*image, VkClearColorValue{}, "taa.reflection.clear", image);
         clears.add(g, "taa.reflection.clear");
         push.clearedNone = 1u;
     }
@@ -98,11 +94,11 @@ TaaReflectionOutput TaaPass::addReflection(graph::RenderGraph& g, const FrameInp
         .sampled(h.previous, in.samplers->linearClamp);
     const bool cleared = push.clearedNone != 0u;
     bindOutput(pass, shownOut, cleared, &shown);
-    bindOutput(pass, historyOut, cleared, &written);
+    bindOutput(pass, h.current, cleared, &written);
     pass.hostStorage(in.motion);  // a moving reflected point's motion slot (the path image's tag)
     if (samples) {
-        bindOutput(pass.sampled(samples->previous, in.samplers->linearClamp), samplesOut, cleared, nullptr);
-        bindSpread(g, pass, spread, spreadOut, cleared, "taa.reflection.spread.unused", inputs.depth, nearest);
+        bindOutput(pass.sampled(samples->previous, in.samplers->linearClamp), samples->current, cleared, nullptr);
+        bindSpread(g, pass, spread, cleared, "taa.reflection.spread.unused", inputs.depth, nearest);
     }
     pass.push(push).dispatch(in.extent, gpu::kTaaTileSize);
     return {shown, written};
@@ -141,7 +137,7 @@ graph::ImageHandle TaaPass::add(graph::RenderGraph& g, const FrameInputs& in, gr
     if (samples) {
         pass.sampled(samples->previous, in.samplers->linearClamp).storageWrite(samples->current, nullptr);
         if (split) pass.sampled(inputs.reflectionHistory.value_or(inputs.depth), nearest);  // unread without one (pc.keptReflection 0)
-        bindSpread(g, pass, spread, spread ? spread->current : graph::ImageHandle{}, false, "taa.color.spread.unused", inputs.depth, nearest);
+        bindSpread(g, pass, spread, false, "taa.color.spread.unused", inputs.depth, nearest);
     }
     push.keptReflection = split && samples && inputs.reflectionHistory ? 1u : 0u;
     pass.push(push).dispatch(in.extent, gpu::kTaaTileSize);
