@@ -59,11 +59,37 @@ shared float tileReflectionWeight[kTile * kTile];
 shared vec3 tileReflection[kTile * kTile];  // the shown reflection where there is one, else 0
 #endif
 
+// One pixel's 3×3 neighbourhood of the tile, [(y + 1) * 3 + x + 1], held by the invocation: walking down
+// its column it reads one new row of three a pixel instead of all nine (on lavapipe each shared-memory
+// read of a varying index is a per-lane loop, and the nine reads were 30 % of the pass).
+struct Window {
+    vec4 t[9];   // tile[]
+    float w[9];  // tileReflectionWeight[]
+};
+
+// Reads the window's row y (−1, 0 or 1) around `local` from the tile.
+void readWindowRow(inout Window win, ivec2 local, int y) {
+    for (int x = -1; x <= 1; ++x) {
+        int at = (local.y + y) * kTile + local.x + x;
+        win.t[(y + 1) * 3 + x + 1] = tile[at];
+        win.w[(y + 1) * 3 + x + 1] = tileReflectionWeight[at];
+    }
+}
+
+// The window one pixel further down the column: rows 0 and 1 move up, row 1 is read.
+void slideWindowDown(inout Window win, ivec2 local) {
+    for (int i = 0; i < 6; ++i) {
+        win.t[i] = win.t[i + 3];
+        win.w[i] = win.w[i + 3];
+    }
+    readWindowRow(win, local, 1);
+}
+
 // taa_moving_filter: the current frame at the pixel's centre, from the 3×3's jittered samples (each lies
 // `jitter` away from its own pixel's centre, the projection having been shifted by it): one sample
 // a frame flips across a moving edge as the jitter cycles, and the history, which cannot keep a whole
 // cycle there as a still pixel does, takes a share of every flip.
-vec3 currentAtCentre(ivec2 local) {
+vec3 currentAtCentre(Window win) {
     vec2 jitter = frame.jitter.xy * 0.5 * frame.screenSize;  // NDC to pixels
     vec3 sum = vec3(0.0);
     float weights = 0.0;
@@ -71,14 +97,15 @@ vec3 currentAtCentre(ivec2 local) {
         for (int x = -1; x <= 1; ++x) {
             vec2 d = vec2(x, y) - jitter;
             float w = exp(-kTaaMovingFilterSharpness * dot(d, d));
-            sum += w * tile[(local.y + y) * kTile + local.x + x].xyz;
+            sum += w * win.t[(y + 1) * 3 + x + 1].xyz;
             weights += w;
         }
     return sum / weights;
 }
 
-// Resolves one pixel; `local` is where it is in the shared tile (its tile position + 1, for the border).
-void resolvePixel(ivec2 pix, ivec2 local) {
+// Resolves one pixel; `local` is where it is in the shared tile (its tile position + 1, for the border),
+// `win` its neighbourhood there.
+void resolvePixel(ivec2 pix, ivec2 local, Window win) {
     ivec2 size = ivec2(frame.screenSize);
     if (any(greaterThanEqual(pix, size))) return;
 
@@ -87,23 +114,22 @@ void resolvePixel(ivec2 pix, ivec2 local) {
     vec3 m1 = vec3(0.0), m2 = vec3(0.0);
 #ifdef PPR_TAA_SPLIT
     float weightMin = 1.0, weightMax = 0.0, brightestWeight = 0.0;
-    vec3 reflection = vec3(0.0);  // the most reflective neighbour's shown reflection
+    int brightest = -1;  // the most reflective neighbour's place in the tile
 #endif
     float nearestDepth = 0.0;  // reverse-Z: larger is nearer
     ivec2 nearest = ivec2(0);  // where it is (its object's motion is the one taken)
     for (int y = -1; y <= 1; ++y)
         for (int x = -1; x <= 1; ++x) {
-            vec4 t = tile[(local.y + y) * kTile + local.x + x];
+            vec4 t = win.t[(y + 1) * 3 + x + 1];
             m1 += t.xyz;
             m2 += t.xyz * t.xyz;
 #ifdef PPR_TAA_SPLIT
-            int at = (local.y + y) * kTile + local.x + x;
-            float w = tileReflectionWeight[at];
+            float w = win.w[(y + 1) * 3 + x + 1];
             weightMin = min(weightMin, w);
             weightMax = max(weightMax, w);
             if (w > brightestWeight) {
                 brightestWeight = w;
-                reflection = tileReflection[at];
+                brightest = (local.y + y) * kTile + local.x + x;
             }
 #endif
             if (t.w > nearestDepth) nearest = ivec2(x, y);
@@ -111,7 +137,7 @@ void resolvePixel(ivec2 pix, ivec2 local) {
         }
     vec3 mean = m1 / 9.0;
     vec3 sigma = sqrt(max(m2 / 9.0 - mean * mean, vec3(0.0)));
-    vec3 currentY = tile[local.y * kTile + local.x].xyz;
+    vec3 currentY = win.t[4].xyz;
 
     float prevW;
     uint slot = motionSlotAt(clamp(pix + nearest, ivec2(0), size - 1));
@@ -120,7 +146,7 @@ void resolvePixel(ivec2 pix, ivec2 local) {
     float reflectionWeight = 0.0;  // 0: the surface's fetch alone
     vec2 reflectionUv = vec2(0.0);
     if (pc.reflectionMotion != 0u) {
-        float w = tileReflectionWeight[local.y * kTile + local.x];
+        float w = win.w[4];
         vec2 path = w > 0.0 ? texelFetch(pathTex, pix, 0).xy : vec2(0.0);
         // Only a still reflected point: for a moving one, the mix measured worse than the surface's
         // fetch alone (docs/temporal.md), and the reflection's own history already follows it.
@@ -139,11 +165,12 @@ void resolvePixel(ivec2 pix, ivec2 local) {
 
     vec3 resolved = currentY;
 #ifdef PPR_TAA_SPLIT
-    float currentWeight = tileReflectionWeight[local.y * kTile + local.x];
+    float currentWeight = win.w[4];
     float resolvedWeight = currentWeight;
     // A pixel with a reflection adds its own; one beside a reflector (whose history may hold some of
-    // its weight) its most reflective neighbour's.
-    if (currentWeight > 0.0) reflection = tileReflection[local.y * kTile + local.x];
+    // its weight) its most reflective neighbour's. One read of the tile.
+    int reflectionAt = currentWeight > 0.0 ? local.y * kTile + local.x : brightest;
+    vec3 reflection = reflectionAt >= 0 ? tileReflection[reflectionAt] : vec3(0.0);
 #endif
 #ifdef PPR_TAA_AVERAGE
     vec2 samples = kFirstSamples;  // what the new history holds (taa_color.glsl)
@@ -155,7 +182,7 @@ void resolvePixel(ivec2 pix, ivec2 local) {
         // it stands still: scene_motion.cpp); the rest keep their jittered sample, whose whole cycle a
         // still pixel's run averages.
         bool objectMoves = slot != 0u && motions[slot].toPrevious != mat4(1.0);
-        vec3 current = pc.movingFilter != 0u && objectMoves ? currentAtCentre(local) : currentY;
+        vec3 current = pc.movingFilter != 0u && objectMoves ? currentAtCentre(win) : currentY;
         vec3 historyRgb = sampleCatmullRom(historyColor, historyUv);
 #ifndef PPR_TAA_SPLIT
         // Where both fetches coincide to rounding (1/1000 pixel: a still view) the mix is the surface's
@@ -230,8 +257,14 @@ void main() {
         tileReflectionWeight[i] = c.a;
     }
     barrier();
+    Window win;
     for (uint row = 0u; row < kTaaRowsPerInvocation; ++row) {
         ivec2 p = pixelInTile(row);
-        resolvePixel(tileOrigin() + p, p + 1);
+        if (row == 0u) {
+            for (int y = -1; y <= 1; ++y) readWindowRow(win, p + 1, y);
+        } else {
+            slideWindowDown(win, p + 1);
+        }
+        resolvePixel(tileOrigin() + p, p + 1, win);
     }
 }
