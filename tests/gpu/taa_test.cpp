@@ -132,7 +132,8 @@ TEST(Taa, StillKeepHoldsARimReflectionThroughTheJitterCycle) {
 // taa_threads only says how many pixels of a tile each invocation resolves: every width gives the
 // same frames, bit for bit, in each of the six resolve shaders (split or whole colour, counted frames
 // or not), under camera motion, with the bobbing ball moving and at a size whose last tiles are
-// partial. One pipeline per width and shader, made once.
+// partial. Below 256 the frame's resolve slides each pixel's 3×3 window down its column (256 reads all
+// nine), so this also checks the slide. One pipeline per width and shader, made once.
 TEST(Taa, EveryWidthGivesTheSameFrames) {
     GpuFixture f;
     f.headless->setTechnique("ppr");
